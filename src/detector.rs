@@ -1,0 +1,184 @@
+//! [`Gjk`]: the queries, one generic implementation for every shape pair.
+//!
+//! Each query places B relative to A once ([`Pair`]), runs GJK on the
+//! shapes' cores, and adds their radii in closed form. Only what a query calls
+//! is compiled into a program: the intersection test alone pulls in neither
+//! EPA, closest points nor ray casts.
+
+use crate::config::GjkConfig;
+use crate::epa::{Epa, PenetrationSolver};
+use crate::gjk::{core_distance, intersect, CoreProximity, CoreSeparation};
+use crate::minkowski::{Pair, SupportPoint};
+use crate::ray::{cast_ray_gjk, Ray};
+use crate::real::{Real, V2};
+use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+use crate::shape::SupportMap;
+use crate::transform::Transform;
+
+/// The narrow-phase detector: configuration plus a penetration solver (EPA
+/// by default), as dyn4j's `Gjk`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Gjk<R: Real, P = Epa<R>> {
+    pub config: GjkConfig<R>,
+    pub solver: P,
+    /// Use the exact closed-form ray casts of polygons, circles, capsules and
+    /// segments (default true); false makes every ray cast iterate.
+    pub closed_form_rays: bool,
+}
+
+impl<R: Real> Gjk<R> {
+    /// Default configuration and EPA.
+    pub fn new() -> Self {
+        Self::with_solver(GjkConfig::default(), Epa::default())
+    }
+}
+
+impl<R: Real, P> Gjk<R, P> {
+    /// A detector with the given configuration and penetration solver.
+    pub fn with_solver(config: GjkConfig<R>, solver: P) -> Self {
+        Self {
+            config,
+            solver,
+            closed_form_rays: true,
+        }
+    }
+
+    /// Whether A and B overlap (touching counts), without computing how much.
+    pub fn intersects<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Detection
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let pair = Pair::new(a, ta, b, tb);
+        let margin = self.config.detect_epsilon() * pair.scale;
+        let (intersecting, iterations, status) = intersect(&pair, self.config.max_detect_iterations(), margin, self.config.distance_epsilon());
+        Detection {
+            intersecting,
+            iterations,
+            status,
+        }
+    }
+
+    /// The separation of A and B: `None` means they certainly overlap or
+    /// touch. A result with `Status::IterationLimit` is a best guess whose
+    /// `error_bound` may exceed its distance.
+    pub fn distance<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Separation<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let pair = Pair::new(a, ta, b, tb);
+        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            CoreProximity::Overlapping { .. } => None,
+            CoreProximity::Separated(core) => separation(&pair, &core),
+        }
+    }
+
+    /// The penetration of A and B: `None` means they are certainly apart.
+    /// Cores that overlap go to the penetration solver; rounded shapes whose
+    /// cores are apart are resolved in closed form from the core distance.
+    pub fn penetration<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        let pair = Pair::new(a, ta, b, tb);
+        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            CoreProximity::Overlapping { simplex, iterations } => {
+                let mut points = [SupportPoint {
+                    point: R::vector(R::ZERO, R::ZERO),
+                    id: 0,
+                }; 3];
+                for (p, v) in points.iter_mut().zip(simplex.vertices()) {
+                    *p = SupportPoint { point: v.w.to_glam(), id: v.id };
+                }
+                let estimate = self.solver.solve(&pair, &points[..simplex.len]);
+                Some(Penetration {
+                    normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
+                    depth: estimate.depth + pair.radius,
+                    error_bound: estimate.error_bound,
+                    iterations: iterations + estimate.iterations,
+                    status: estimate.status,
+                })
+            }
+            CoreProximity::Separated(core) => {
+                let (distance, normal) = core.simplex.distance_and_normal(core.v)?;
+                let error_bound = (distance - core.lower_bound).max(R::ZERO);
+                let certain = core.status.is_converged() || core.lower_bound > pair.radius;
+                if distance > pair.radius && certain {
+                    return None;
+                }
+                Some(Penetration {
+                    normal: pair.to_world_vector(normal),
+                    depth: (pair.radius - distance).max(R::ZERO),
+                    error_bound,
+                    iterations: core.iterations,
+                    status: core.status,
+                })
+            }
+        }
+    }
+
+    /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
+    /// up to `max_length` (zero, negative or infinite: unbounded).
+    pub fn raycast<S>(&self, ray: &Ray<R>, max_length: R, shape: &S, transform: &Transform<R>) -> RayCast<R>
+    where
+        S: SupportMap<R> + ?Sized,
+    {
+        let max = if max_length > R::ZERO { max_length } else { R::INFINITY };
+        let reference = V2::from_glam(shape.reference_point());
+        // Into the shape's frame, relative to its reference point: the
+        // difference first, so a ray near a far-away shape keeps its precision.
+        let origin = transform.inverse_rotate(ray.origin - transform.translation) - reference;
+        let direction = transform.inverse_rotate(ray.direction);
+        let local = if self.closed_form_rays {
+            shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
+        } else {
+            None
+        };
+        let local = local.unwrap_or_else(|| {
+            cast_ray_gjk(
+                shape,
+                origin,
+                direction,
+                max,
+                self.config.max_raycast_iterations(),
+                self.config.raycast_epsilon(),
+            )
+        });
+        let outcome = match local.outcome {
+            RayOutcome::Hit(h) => RayOutcome::Hit(RayHit {
+                distance: h.distance,
+                // From the world ray, not the local point: one rounding less.
+                point: (ray.origin + ray.direction * h.distance).to_glam(),
+                normal: transform.rotate(V2::from_glam(h.normal)).to_glam(),
+            }),
+            other => other,
+        };
+        RayCast { outcome, ..local }
+    }
+}
+
+fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R>) -> Option<Separation<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let (core_distance, normal) = core.simplex.distance_and_normal(core.v)?;
+    if core_distance <= pair.radius && (core.status.is_converged() || core_distance - core.lower_bound <= R::ZERO) {
+        return None;
+    }
+    let (a, b) = core.simplex.witness_points();
+    let (a, b) = (a + normal * pair.radius_a, b - normal * pair.radius_b);
+    Some(Separation {
+        distance: (core_distance - pair.radius).max(R::ZERO),
+        normal: pair.to_world_vector(normal),
+        point_a: pair.to_world_point(a),
+        point_b: pair.to_world_point(b),
+        error_bound: (core_distance - core.lower_bound).max(R::ZERO),
+        iterations: core.iterations,
+        status: if core.status == Status::Converged { Status::Converged } else { core.status },
+    })
+}

@@ -1,0 +1,149 @@
+//! GJK on the cores of two shapes: the intersection test and the distance.
+//!
+//! Termination never rests on an absolute tolerance. In order:
+//! - the origin enclosed by the simplex (overlap), or on it (touching);
+//! - a support vertex that repeats (exact, for polytope cores: the main
+//!   criterion, as in Box2D);
+//! - a certified gap: `|v|` is an upper bound of the distance and
+//!   `w . v / |v|` a lower bound; stop when they are within
+//!   `epsilon * size` (curved cores);
+//! - no progress: `|v|` failed to shrink, so rounding has the last word;
+//! - the iteration limit, reported as such.
+
+use crate::minkowski::Pair;
+use crate::real::{Real, V2};
+use crate::result::Status;
+use crate::shape::SupportMap;
+use crate::simplex::{Closest, Simplex};
+
+/// What GJK found out about the cores.
+pub(crate) enum CoreProximity<R: Real> {
+    /// The cores overlap or touch; the simplex encloses (or touches) the
+    /// origin, EPA's starting point.
+    Overlapping { simplex: Simplex<R>, iterations: u32 },
+    /// The cores are apart: closest point `v` of the Minkowski difference.
+    Separated(CoreSeparation<R>),
+}
+
+pub(crate) struct CoreSeparation<R: Real> {
+    pub simplex: Simplex<R>,
+    pub v: V2<R>,
+    /// The largest certified lower bound of the core distance seen.
+    pub lower_bound: R,
+    pub iterations: u32,
+    pub status: Status,
+}
+
+fn first_direction<R: Real>(centers: V2<R>) -> V2<R> {
+    // Towards the origin from B's center minus A's: the point of B - A most
+    // likely closest to the origin.
+    if centers.length_squared() > R::ZERO {
+        -centers
+    } else {
+        V2::new(R::ONE, R::ZERO)
+    }
+}
+
+/// Distance between the cores (radii not included).
+pub(crate) fn core_distance<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreProximity<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let tolerance = epsilon * pair.scale;
+    let mut simplex = Simplex::new(pair.support(first_direction(pair.centers)));
+    let mut lower_bound = R::ZERO;
+    let mut previous: Option<(Simplex<R>, V2<R>, R)> = None;
+    let mut iterations = 1;
+    loop {
+        let before = simplex;
+        let v = match simplex.solve() {
+            Closest::Enclosed => return CoreProximity::Overlapping { simplex, iterations },
+            Closest::Point(v) => v,
+        };
+        let vv = v.length_squared();
+        if vv == R::ZERO {
+            return CoreProximity::Overlapping { simplex, iterations };
+        }
+        if let Some((s, pv, pvv)) = previous {
+            if vv >= pvv {
+                // No progress: the previous simplex was as close as rounding allows.
+                return separated(s, pv, lower_bound, iterations, Status::Converged);
+            }
+        }
+        previous = Some((simplex, v, vv));
+        if iterations >= max_iterations {
+            return separated(simplex, v, lower_bound, iterations, Status::IterationLimit);
+        }
+        let w = pair.support(-v);
+        iterations += 1;
+        let length = vv.sqrt();
+        lower_bound = lower_bound.max(v.dot(w.w) / length);
+        if before.contains_id(w.id) || simplex.contains_id(w.id) || length - lower_bound <= tolerance {
+            return separated(simplex, v, lower_bound, iterations, Status::Converged);
+        }
+        simplex.push(w);
+    }
+}
+
+fn separated<R: Real>(simplex: Simplex<R>, v: V2<R>, lower_bound: R, iterations: u32, status: Status) -> CoreProximity<R> {
+    CoreProximity::Separated(CoreSeparation {
+        simplex,
+        v,
+        lower_bound,
+        iterations,
+        status,
+    })
+}
+
+/// The intersection test: GJK that stops as soon as either verdict is
+/// certain, and never computes closest points. `margin` widens the shapes
+/// (the detect epsilon times the size).
+pub(crate) fn intersect<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, margin: R, epsilon: R) -> (bool, u32, Status)
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let reach = pair.radius + margin;
+    let reach2 = reach * reach;
+    let tolerance = epsilon * pair.scale;
+    let mut simplex = Simplex::new(pair.support(first_direction(pair.centers)));
+    let mut previous_vv = R::INFINITY;
+    let mut iterations = 1;
+    loop {
+        let before = simplex;
+        let v = match simplex.solve() {
+            Closest::Enclosed => return (true, iterations, Status::Converged),
+            Closest::Point(v) => v,
+        };
+        let vv = v.length_squared();
+        // |v| is an upper bound of the core distance.
+        if vv <= reach2 {
+            return (true, iterations, Status::Converged);
+        }
+        if vv >= previous_vv {
+            return (false, iterations, Status::Converged);
+        }
+        previous_vv = vv;
+        if iterations >= max_iterations {
+            return (false, iterations, Status::IterationLimit);
+        }
+        let w = pair.support(-v);
+        iterations += 1;
+        // w . v / |v| is a lower bound: beyond `reach`, certainly apart.
+        // Compared squared so polygons (reach 0) need no square root.
+        let vw = v.dot(w.w);
+        if vw > R::ZERO && vw * vw > reach2 * vv {
+            return (false, iterations, Status::Converged);
+        }
+        if before.contains_id(w.id) || simplex.contains_id(w.id) {
+            return (false, iterations, Status::Converged);
+        }
+        if w.id == crate::minkowski::NO_ID && vv - vw <= tolerance * vv.sqrt() {
+            return (false, iterations, Status::Converged);
+        }
+        simplex.push(w);
+    }
+}

@@ -1,0 +1,151 @@
+//! The Minkowski difference B - A of two placed shapes, evaluated in A's
+//! reference frame: the relative pose is computed once per query, so two
+//! shapes far from the origin are handled with the precision of their size,
+//! not of their position.
+
+use crate::real::{Real, V2};
+use crate::shape::{SupportMap, NO_FEATURE};
+use crate::transform::Transform;
+
+/// Feature id of a Minkowski vertex: both shapes' vertex ids, or [`NO_ID`]
+/// when either support point lies on a curve.
+pub const NO_ID: u64 = u64::MAX;
+
+/// A point of the Minkowski difference with the shape points it came from.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct MinkowskiVertex<R> {
+    /// `b - a`.
+    pub w: V2<R>,
+    pub a: V2<R>,
+    pub b: V2<R>,
+    pub id: u64,
+}
+
+/// A support point of a Minkowski difference, as pluggable penetration
+/// solvers see it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SupportPoint<R: Real> {
+    pub point: R::Vector,
+    /// Identifies the pair of shape vertices; [`NO_ID`] on curves. Equal ids
+    /// mean the same point, so a solver can stop exactly.
+    pub id: u64,
+}
+
+/// The Minkowski difference of the cores of two shapes (B - A), in the
+/// frame of A's reference point: what a penetration solver works on.
+pub trait MinkowskiDifference<R: Real> {
+    /// The farthest point of B - A along `direction` (not necessarily unit).
+    fn support(&self, direction: R::Vector) -> SupportPoint<R>;
+    /// The pair's size: the larger bounding radius. Relative tolerances are
+    /// multiplied by it.
+    fn scale(&self) -> R;
+}
+
+/// Two shapes placed relative to each other.
+pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
+    a: &'s A,
+    b: &'s B,
+    /// Rotation of B's frame in A's frame, skipped when it is the identity.
+    cos: R,
+    sin: R,
+    rotated: bool,
+    /// B's reference point in A's reference frame.
+    offset: V2<R>,
+    /// Sum of both radii: the cores are compared, the radii added after.
+    pub radius: R,
+    pub radius_a: R,
+    pub radius_b: R,
+    pub scale: R,
+    /// B's center minus A's center: GJK's first search direction.
+    pub centers: V2<R>,
+    frame: Transform<R>,
+    reference_a: V2<R>,
+}
+
+impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s, R, A, B> {
+    pub fn new(a: &'s A, ta: &Transform<R>, b: &'s B, tb: &Transform<R>) -> Self {
+        let reference_a = V2::from_glam(a.reference_point());
+        let reference_b = V2::from_glam(b.reference_point());
+        let (cos, sin, rotated) = if ta.cos == tb.cos && ta.sin == tb.sin {
+            (R::ONE, R::ZERO, false)
+        } else {
+            (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos, true)
+        };
+        let mut pair = Self {
+            a,
+            b,
+            cos,
+            sin,
+            rotated,
+            offset: V2::zero(),
+            radius_a: a.radius(),
+            radius_b: b.radius(),
+            radius: a.radius() + b.radius(),
+            scale: a.bounding_radius().max(b.bounding_radius()),
+            centers: V2::zero(),
+            frame: *ta,
+            reference_a,
+        };
+        // Differences first: references and translations of nearby shapes
+        // nearly cancel, and a difference of nearby floats is exact.
+        let references = pair.rotate(reference_b) - reference_a;
+        let translations = ta.inverse_rotate(tb.translation - ta.translation);
+        pair.offset = translations + references;
+        pair.centers = pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
+        pair
+    }
+
+    #[inline(always)]
+    fn rotate(&self, v: V2<R>) -> V2<R> {
+        if self.rotated {
+            V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
+        } else {
+            v
+        }
+    }
+    #[inline(always)]
+    fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
+        if self.rotated {
+            V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
+        } else {
+            v
+        }
+    }
+
+    /// The support point of B - A along `d`.
+    #[inline(always)]
+    pub fn support(&self, d: V2<R>) -> MinkowskiVertex<R> {
+        let (a, ia) = self.a.support_feature((-d).to_glam());
+        let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam());
+        let a = V2::from_glam(a);
+        let b = self.rotate(V2::from_glam(b)) + self.offset;
+        let id = if ia == NO_FEATURE || ib == NO_FEATURE {
+            NO_ID
+        } else {
+            ((ia as u64) << 32) | ib as u64
+        };
+        MinkowskiVertex { w: b - a, a, b, id }
+    }
+
+    /// A point of the pair frame in world coordinates.
+    pub fn to_world_point(&self, p: V2<R>) -> R::Vector {
+        (self.frame.rotate(p + self.reference_a) + self.frame.translation).to_glam()
+    }
+    /// A direction of the pair frame in world coordinates.
+    pub fn to_world_vector(&self, v: V2<R>) -> R::Vector {
+        self.frame.rotate(v).to_glam()
+    }
+}
+
+impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R> for Pair<'_, R, A, B> {
+    fn support(&self, direction: R::Vector) -> SupportPoint<R> {
+        let v = Pair::support(self, V2::from_glam(direction));
+        SupportPoint {
+            point: v.w.to_glam(),
+            id: v.id,
+        }
+    }
+    fn scale(&self) -> R {
+        self.scale
+    }
+}

@@ -1,0 +1,279 @@
+//! Ray casts: closed forms for polygons, circles, capsules and segments
+//! (exact face normals, no iteration), and GJK ray casting (conservative
+//! advancement, van den Bergen 2004) for every other support map.
+
+use crate::real::{Real, V2};
+use crate::result::{RayCast, RayHit, RayOutcome, Status};
+use crate::shape::SupportMap;
+use crate::simplex::{Closest, Simplex};
+use crate::transform::check_point;
+use crate::Error;
+
+/// A ray cast in a shape's local frame: what [`SupportMap::cast_local_ray`]
+/// returns (point and normal local, relative to the reference point).
+pub type LocalRayCast<R> = RayCast<R>;
+
+/// A half-line: an origin and a unit direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Ray<R: Real> {
+    pub(crate) origin: V2<R>,
+    pub(crate) direction: V2<R>,
+}
+
+impl<R: Real> Ray<R> {
+    /// A ray from `origin` along `direction`, which is normalised and must
+    /// be finite and non-zero.
+    pub fn new(origin: R::Vector, direction: R::Vector) -> Result<Self, Error> {
+        let origin = check_point(V2::from_glam(origin))?;
+        let d = V2::from_glam(direction);
+        if !d.is_finite() {
+            return Err(Error::NonFinite);
+        }
+        // Scale first so tiny and huge directions normalise without
+        // under- or overflow.
+        let m = d.max_abs();
+        if m == R::ZERO {
+            return Err(Error::ZeroLength);
+        }
+        let direction = (d * (R::ONE / m)).try_normalize().ok_or(Error::ZeroLength)?;
+        Ok(Self { origin, direction })
+    }
+    pub fn origin(&self) -> R::Vector {
+        self.origin.to_glam()
+    }
+    /// The unit direction.
+    pub fn direction(&self) -> R::Vector {
+        self.direction.to_glam()
+    }
+}
+
+fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
+    RayOutcome::Hit(RayHit {
+        distance: t,
+        point: (o + d * t).to_glam(),
+        normal: normal.to_glam(),
+    })
+}
+
+/// Clips the ray against each edge's half-plane (counter-clockwise vertices):
+/// the hit is the last entry, its normal the entered face's.
+pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let (mut lower, mut upper) = (R::ZERO, max);
+    let mut entered: Option<V2<R>> = None;
+    let n = vertices.len();
+    for i in 0..n {
+        let a = vertices[i];
+        let normal = (vertices[if i + 1 == n { 0 } else { i + 1 }] - a).perp_cw();
+        // Positive when the origin is on the inner side of this edge.
+        let numerator = normal.dot(a - o);
+        let denominator = normal.dot(d);
+        if denominator == R::ZERO {
+            if numerator < R::ZERO {
+                return RayCast::closed_form(RayOutcome::Miss);
+            }
+        } else {
+            let t = numerator / denominator;
+            if denominator < R::ZERO {
+                if t > lower {
+                    lower = t;
+                    entered = Some(normal);
+                }
+            } else if t < upper {
+                upper = t;
+            }
+            if upper < lower {
+                return RayCast::closed_form(RayOutcome::Miss);
+            }
+        }
+    }
+    RayCast::closed_form(match entered {
+        None => RayOutcome::Inside,
+        Some(normal) => hit(o, d, lower, normal.try_normalize().unwrap_or(-d)),
+    })
+}
+
+/// Ray against a disk. The root is taken in the form without cancellation,
+/// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
+/// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
+pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let m = o - center;
+    let mm = m.length();
+    if mm <= r {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let b = m.dot(d);
+    let p = d.cross(m).abs();
+    if b >= R::ZERO || p > r {
+        return RayCast::closed_form(RayOutcome::Miss);
+    }
+    let disc = (r - p) * (r + p);
+    let c = (mm - r) * (mm + r);
+    let t = c / (-b + disc.sqrt());
+    if t > max {
+        return RayCast::closed_form(RayOutcome::Miss);
+    }
+    let normal = (m + d * t).try_normalize().unwrap_or(-d);
+    RayCast::closed_form(hit(o, d, t, normal))
+}
+
+/// Ray against the segment `a`-`a + delta` swept by `r` (r = 0: the bare
+/// segment). The first hit on the union of the side band and the two end
+/// disks is the first hit of any of them.
+pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let len2 = delta.length_squared();
+    let rel = o - a;
+    // Closest point of the core to the ray origin decides "inside".
+    let t_axis = (rel.dot(delta) / len2).max(R::ZERO).min(R::ONE);
+    let offset = rel - delta * t_axis;
+    let inside = if r > R::ZERO {
+        offset.length() <= r
+    } else {
+        delta.cross(rel) == R::ZERO && t_axis > R::ZERO && t_axis < R::ONE || offset == V2::zero()
+    };
+    if inside {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let length = len2.sqrt();
+    let axis = delta * (R::ONE / length);
+    let side = axis.perp();
+    let mut best: Option<(R, V2<R>)> = None;
+    let mut consider = |t: R, normal: V2<R>| {
+        if t >= R::ZERO && t <= max && best.is_none_or(|(bt, _)| t < bt) {
+            best = Some((t, normal));
+        }
+    };
+    // The two sides, lines parallel to the core at distance r.
+    let h = side.dot(rel);
+    let dn = side.dot(d);
+    if dn != R::ZERO {
+        let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
+        if toward * dn < R::ZERO {
+            let t = (h.abs() - r) / dn.abs();
+            let along = axis.dot(rel + d * t);
+            if along >= R::ZERO && along <= length {
+                consider(t, side * toward);
+            }
+        }
+    } else if r == R::ZERO && h == R::ZERO {
+        // Along the bare segment's own line: it meets the nearer end.
+        let along = axis.dot(rel);
+        let t = if axis.dot(d) > R::ZERO { -along } else { along - length };
+        consider(t, -d);
+    }
+    if r > R::ZERO {
+        for center in [a, a + delta] {
+            if let RayOutcome::Hit(hit) = cast_ray_disk(center, r, o, d, max).outcome {
+                consider(hit.distance, V2::from_glam(hit.normal));
+            }
+        }
+    }
+    RayCast::closed_form(match best {
+        Some((t, normal)) => hit(o, d, t, normal),
+        None => RayOutcome::Miss,
+    })
+}
+
+/// GJK ray cast on any support map (radius included): advance the ray point
+/// towards the shape by the support plane's distance until it reaches the
+/// surface within `epsilon * size`. The normal is the last advancing direction,
+/// which converges to the surface normal.
+pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
+    shape: &S,
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+    max_iterations: u32,
+    epsilon: R,
+) -> RayCast<R> {
+    let radius = shape.radius();
+    let tolerance = epsilon * shape.bounding_radius();
+    let support = |dir: V2<R>| {
+        let p = V2::from_glam(shape.support(dir.to_glam()));
+        match dir.try_normalize() {
+            Some(u) if radius > R::ZERO => p + u * radius,
+            _ => p,
+        }
+    };
+    let mut lambda = R::ZERO;
+    let mut x = o;
+    let mut normal = V2::zero();
+    let mut v = x - V2::from_glam(shape.center());
+    // Shape points (not x - p), since x moves as the ray advances.
+    let mut points: [V2<R>; 3] = [V2::zero(); 3];
+    let mut len = 0usize;
+    let mut iterations = 0;
+    let status = loop {
+        if v.length_squared() <= tolerance * tolerance {
+            break Status::Converged;
+        }
+        if iterations >= max_iterations {
+            break Status::IterationLimit;
+        }
+        iterations += 1;
+        let p = support(v);
+        let w = x - p;
+        let vw = v.dot(w);
+        if vw > R::ZERO {
+            let vd = v.dot(d);
+            if vd >= R::ZERO {
+                return RayCast {
+                    outcome: RayOutcome::Miss,
+                    iterations,
+                    status: Status::Converged,
+                };
+            }
+            lambda -= vw / vd;
+            if lambda > max {
+                return RayCast {
+                    outcome: RayOutcome::Miss,
+                    iterations,
+                    status: Status::Converged,
+                };
+            }
+            x = o + d * lambda;
+            normal = v;
+        }
+        if len == 3 {
+            len = 2;
+        }
+        points[len] = p;
+        len += 1;
+        // Closest point of conv{x - p_i} to the origin, reducing the set.
+        let mut simplex = Simplex::new(vertex(x - points[0], points[0]));
+        for &q in &points[1..len] {
+            simplex.push(vertex(x - q, q));
+        }
+        match simplex.solve() {
+            Closest::Enclosed => {
+                v = V2::zero();
+            }
+            Closest::Point(closest) => {
+                v = closest;
+                len = simplex.len;
+                for (k, s) in simplex.vertices().iter().enumerate() {
+                    points[k] = s.b;
+                }
+            }
+        }
+    };
+    let outcome = if lambda == R::ZERO {
+        RayOutcome::Inside
+    } else {
+        hit(o, d, lambda, normal.try_normalize().unwrap_or(-d))
+    };
+    RayCast {
+        outcome,
+        iterations,
+        status,
+    }
+}
+
+fn vertex<R: Real>(w: V2<R>, p: V2<R>) -> crate::minkowski::MinkowskiVertex<R> {
+    crate::minkowski::MinkowskiVertex {
+        w,
+        a: V2::zero(),
+        b: p,
+        id: crate::minkowski::NO_ID,
+    }
+}

@@ -1,0 +1,290 @@
+//! The scalar abstraction: one generic code path for `f32` (with [`glam::Vec2`])
+//! and `f64` (with [`glam::DVec2`]).
+//!
+//! Internally every algorithm works on [`V2`], a plain two-component vector
+//! generic over the scalar, so the geometry is written once. Users only ever see
+//! glam's vector types: conversions happen at the API boundary and compile to
+//! nothing.
+
+use core::fmt::Debug;
+use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+}
+
+/// A floating-point scalar gjk2d computes in: `f32` or `f64`.
+///
+/// Sealed: the error bounds gjk2d states are derived for IEEE binary32 and
+/// binary64, so no other type may stand in.
+pub trait Real:
+    sealed::Sealed
+    + Copy
+    + Debug
+    + Default
+    + PartialOrd
+    + PartialEq
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + 'static
+{
+    /// The glam vector users pass in and get back: `Vec2` for f32, `DVec2` for f64.
+    type Vector: Copy + Debug + PartialEq + Default;
+
+    const ZERO: Self;
+    const ONE: Self;
+    const TWO: Self;
+    const HALF: Self;
+    /// Machine epsilon (the gap between 1 and the next representable value).
+    const EPSILON: Self;
+    const INFINITY: Self;
+    /// Largest coordinate magnitude a shape may have. Squares of differences of
+    /// such coordinates, summed, stay finite, so no query can overflow to inf/NaN.
+    const MAX_COORDINATE: Self;
+
+    fn from_f64(value: f64) -> Self;
+    fn to_f64(self) -> f64;
+    fn from_u32(value: u32) -> Self;
+    fn sqrt(self) -> Self;
+    fn abs(self) -> Self;
+    fn sin(self) -> Self;
+    fn cos(self) -> Self;
+    fn atan2(self, x: Self) -> Self;
+    fn is_finite(self) -> bool;
+    /// `self * a + b` with one rounding; used where a cancellation would lose
+    /// the bits that matter (exact orientation predicates).
+    fn mul_add(self, a: Self, b: Self) -> Self;
+
+    fn vector(x: Self, y: Self) -> Self::Vector;
+    fn components(v: Self::Vector) -> (Self, Self);
+
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        if self > other {
+            self
+        } else {
+            other
+        }
+    }
+    #[inline(always)]
+    fn min(self, other: Self) -> Self {
+        if self < other {
+            self
+        } else {
+            other
+        }
+    }
+}
+
+macro_rules! impl_real {
+    ($t:ty, $vec:ty, $sqrt:path, $sin:path, $cos:path, $atan2:path, $fma:path, $max_coord:expr) => {
+        impl Real for $t {
+            type Vector = $vec;
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const TWO: Self = 2.0;
+            const HALF: Self = 0.5;
+            const EPSILON: Self = <$t>::EPSILON;
+            const INFINITY: Self = <$t>::INFINITY;
+            const MAX_COORDINATE: Self = $max_coord;
+
+            #[inline(always)]
+            fn from_f64(value: f64) -> Self {
+                value as $t
+            }
+            #[inline(always)]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline(always)]
+            fn from_u32(value: u32) -> Self {
+                value as $t
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                $sqrt(self)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                <$t>::abs(self)
+            }
+            #[inline(always)]
+            fn sin(self) -> Self {
+                $sin(self)
+            }
+            #[inline(always)]
+            fn cos(self) -> Self {
+                $cos(self)
+            }
+            #[inline(always)]
+            fn atan2(self, x: Self) -> Self {
+                $atan2(self, x)
+            }
+            #[inline(always)]
+            fn is_finite(self) -> bool {
+                <$t>::is_finite(self)
+            }
+            #[inline(always)]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                $fma(self, a, b)
+            }
+            #[inline(always)]
+            fn vector(x: Self, y: Self) -> Self::Vector {
+                <$vec>::new(x, y)
+            }
+            #[inline(always)]
+            fn components(v: Self::Vector) -> (Self, Self) {
+                (v.x, v.y)
+            }
+        }
+    };
+}
+
+impl_real!(f32, glam::Vec2, libm::sqrtf, libm::sinf, libm::cosf, libm::atan2f, libm::fmaf, 1.0e15);
+impl_real!(f64, glam::DVec2, libm::sqrt, libm::sin, libm::cos, libm::atan2, libm::fma, 1.0e150);
+
+/// The internal 2D vector, generic over the scalar.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct V2<R> {
+    pub x: R,
+    pub y: R,
+}
+
+impl<R: Real> V2<R> {
+    #[inline(always)]
+    pub const fn new(x: R, y: R) -> Self {
+        Self { x, y }
+    }
+    #[inline(always)]
+    pub fn zero() -> Self {
+        Self::new(R::ZERO, R::ZERO)
+    }
+    #[inline(always)]
+    pub fn from_glam(v: R::Vector) -> Self {
+        let (x, y) = R::components(v);
+        Self { x, y }
+    }
+    #[inline(always)]
+    pub fn to_glam(self) -> R::Vector {
+        R::vector(self.x, self.y)
+    }
+    #[inline(always)]
+    pub fn dot(self, o: Self) -> R {
+        self.x * o.x + self.y * o.y
+    }
+    /// z-component of the 3D cross product: positive when `o` lies
+    /// counter-clockwise of `self`.
+    #[inline(always)]
+    pub fn cross(self, o: Self) -> R {
+        self.x * o.y - self.y * o.x
+    }
+    /// Rotated a quarter turn counter-clockwise.
+    #[inline(always)]
+    pub fn perp(self) -> Self {
+        Self::new(-self.y, self.x)
+    }
+    /// Rotated a quarter turn clockwise: the outward normal of a
+    /// counter-clockwise edge with this direction.
+    #[inline(always)]
+    pub fn perp_cw(self) -> Self {
+        Self::new(self.y, -self.x)
+    }
+    #[inline(always)]
+    pub fn length_squared(self) -> R {
+        self.dot(self)
+    }
+    #[inline(always)]
+    pub fn length(self) -> R {
+        self.length_squared().sqrt()
+    }
+    /// Unit vector, or `None` for the zero vector (never a NaN).
+    #[inline]
+    pub fn try_normalize(self) -> Option<Self> {
+        let len = self.length();
+        if len > R::ZERO && len.is_finite() {
+            Some(self * (R::ONE / len))
+        } else {
+            None
+        }
+    }
+    #[inline(always)]
+    pub fn is_finite(self) -> bool {
+        self.x.is_finite() && self.y.is_finite()
+    }
+    #[inline(always)]
+    pub fn max_abs(self) -> R {
+        self.x.abs().max(self.y.abs())
+    }
+    #[inline(always)]
+
+}
+
+impl<R: Real> Add for V2<R> {
+    type Output = Self;
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        Self::new(self.x + o.x, self.y + o.y)
+    }
+}
+impl<R: Real> Sub for V2<R> {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        Self::new(self.x - o.x, self.y - o.y)
+    }
+}
+impl<R: Real> Neg for V2<R> {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        Self::new(-self.x, -self.y)
+    }
+}
+impl<R: Real> Mul<R> for V2<R> {
+    type Output = Self;
+    #[inline(always)]
+    fn mul(self, s: R) -> Self {
+        Self::new(self.x * s, self.y * s)
+    }
+}
+
+/// `cross(b - a, c - a)` with its sign right far beyond what the plain formula
+/// gives: positive when `a, b, c` turn counter-clockwise. The differences and
+/// products are expanded error-free (TwoDiff, fma), so only the final sums round,
+/// and those are tiny next to any value they could flip. Used where a sign
+/// decides a verdict (convexity of user polygons), never in hot loops.
+pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
+    let (abx, abx_e) = two_diff(b.x, a.x);
+    let (aby, aby_e) = two_diff(b.y, a.y);
+    let (acx, acx_e) = two_diff(c.x, a.x);
+    let (acy, acy_e) = two_diff(c.y, a.y);
+    let p = abx * acy;
+    let p_e = abx.mul_add(acy, -p);
+    let q = aby * acx;
+    let q_e = aby.mul_add(acx, -q);
+    // Main term and its error, then the cross terms from the difference errors.
+    let main = p - q;
+    let tail = (p_e - q_e) + (abx * acy_e + abx_e * acy) - (aby * acx_e + aby_e * acx) + (abx_e * acy_e - aby_e * acx_e);
+    // When p and q nearly cancel, p - q is exact (Sterbenz) and the sign
+    // comes from the tail of rounding errors, which is itself computed
+    // almost exactly.
+    main + tail
+}
+
+/// Knuth's TwoSum applied to `a - b`: `hi + lo == a - b` exactly.
+#[inline]
+fn two_diff<R: Real>(a: R, b: R) -> (R, R) {
+    let hi = a - b;
+    let bv = a - hi;
+    let av = hi + bv;
+    let lo = (a - av) + (bv - b);
+    (hi, lo)
+}

@@ -1,0 +1,109 @@
+//! What the queries return. Every result carries how it ended and how many
+//! iterations it took, so a caller can tell an answer from a best guess.
+
+use crate::Real;
+
+/// How a query ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Status {
+    /// Converged: exactly (a support vertex repeated) or within the epsilon.
+    Converged,
+    /// Stopped at the configured iteration limit; the answer is the best
+    /// the query had, and its `error_bound` says how far it may be off.
+    IterationLimit,
+    /// EPA's polytope filled up before it converged (raise its capacity).
+    CapacityLimit,
+}
+
+impl Status {
+    pub fn is_converged(self) -> bool {
+        self == Status::Converged
+    }
+}
+
+/// The answer of the intersection test.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Detection {
+    /// Whether the shapes overlap (touching counts as overlapping).
+    pub intersecting: bool,
+    pub iterations: u32,
+    /// `IterationLimit` means the verdict is a best guess.
+    pub status: Status,
+}
+
+/// Two shapes apart: the distance, the unit normal from A towards B, and the
+/// closest point on each shape, in world coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Separation<R: Real> {
+    pub distance: R,
+    pub normal: R::Vector,
+    pub point_a: R::Vector,
+    pub point_b: R::Vector,
+    /// Certified bound on the error of `distance` from the iteration: the
+    /// gap between GJK's upper and lower bounds (rounding comes on top, a few
+    /// ulps of the pair's size). Zero-width for polytopes that converged.
+    pub error_bound: R,
+    pub iterations: u32,
+    pub status: Status,
+}
+
+/// Two shapes overlapping: moving B by `depth` along `normal` (a unit vector
+/// pointing from A towards B) separates them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Penetration<R: Real> {
+    pub normal: R::Vector,
+    pub depth: R,
+    /// Certified bound on the error of `depth` from the iteration (the gap
+    /// between EPA's lower and upper bounds).
+    pub error_bound: R,
+    /// GJK and EPA iterations together.
+    pub iterations: u32,
+    pub status: Status,
+}
+
+/// Where a ray ended up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RayOutcome<R: Real> {
+    Hit(RayHit<R>),
+    /// No hit within the maximum length.
+    Miss,
+    /// The ray starts inside the shape or on its boundary. Not a hit: there
+    /// is no entry point and no meaningful normal, as in dyn4j.
+    Inside,
+}
+
+/// The first point where a ray enters a shape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayHit<R: Real> {
+    /// Distance along the (unit) ray direction.
+    pub distance: R,
+    pub point: R::Vector,
+    /// Unit outward normal of the surface at the hit point.
+    pub normal: R::Vector,
+}
+
+/// The answer of a ray cast.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayCast<R: Real> {
+    pub outcome: RayOutcome<R>,
+    /// Zero for closed-form casts (polygons, circles, capsules, segments).
+    pub iterations: u32,
+    pub status: Status,
+}
+
+impl<R: Real> RayCast<R> {
+    pub fn hit(&self) -> Option<&RayHit<R>> {
+        match &self.outcome {
+            RayOutcome::Hit(h) => Some(h),
+            _ => None,
+        }
+    }
+    pub(crate) fn closed_form(outcome: RayOutcome<R>) -> Self {
+        Self {
+            outcome,
+            iterations: 0,
+            status: Status::Converged,
+        }
+    }
+}

@@ -1,0 +1,82 @@
+use super::{Segment, SupportMap};
+use crate::ray::{cast_ray_capsule, LocalRayCast};
+use crate::real::{Real, V2};
+use crate::transform::check_length;
+use crate::Error;
+
+/// A segment swept by a radius (a stadium).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Capsule<R: Real> {
+    core: Segment<R>,
+    radius: R,
+}
+
+impl<R: Real> Capsule<R> {
+    /// The segment `a`-`b` (distinct points) swept by `radius` (> 0).
+    pub fn new(a: R::Vector, b: R::Vector, radius: R) -> Result<Self, Error> {
+        Ok(Self {
+            core: Segment::new(a, b)?,
+            radius: check_length(radius)?,
+        })
+    }
+
+    /// dyn4j's constructor: a capsule `width` by `height` centered on the
+    /// origin, its long axis along x if `width >= height`, else along y.
+    /// Equal sides give a circle-like capsule with a tiny core, as dyn4j does.
+    pub fn from_size(width: R, height: R) -> Result<Self, Error> {
+        let (w, h) = (check_length(width)?, check_length(height)?);
+        let (long, short, along_x) = if w >= h { (w, h, true) } else { (h, w, false) };
+        let radius = short * R::HALF;
+        // A capsule of equal sides has a zero-length core; give it the
+        // shortest segment that is still a segment, as a point core would do.
+        let mut half_core = (long - short) * R::HALF;
+        if half_core <= R::ZERO {
+            half_core = radius * R::EPSILON;
+        }
+        let (a, b) = if along_x {
+            (R::vector(-half_core, R::ZERO), R::vector(half_core, R::ZERO))
+        } else {
+            (R::vector(R::ZERO, -half_core), R::vector(R::ZERO, half_core))
+        };
+        Self::new(a, b, radius)
+    }
+    pub fn segment(&self) -> &Segment<R> {
+        &self.core
+    }
+    pub fn capsule_radius(&self) -> R {
+        self.radius
+    }
+}
+
+impl<R: Real> SupportMap<R> for Capsule<R> {
+    #[inline]
+    fn support(&self, direction: R::Vector) -> R::Vector {
+        self.core.support(direction)
+    }
+    #[inline]
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        self.core.support_feature(direction)
+    }
+    fn center(&self) -> R::Vector {
+        self.core.center()
+    }
+    fn bounding_radius(&self) -> R {
+        self.core.bounding_radius() + self.radius
+    }
+    fn radius(&self) -> R {
+        self.radius
+    }
+    fn reference_point(&self) -> R::Vector {
+        self.core.reference_point()
+    }
+    fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        Some(cast_ray_capsule(
+            V2::zero(),
+            self.core.delta,
+            self.radius,
+            V2::from_glam(o),
+            V2::from_glam(d),
+            max,
+        ))
+    }
+}

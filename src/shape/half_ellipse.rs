@@ -1,0 +1,58 @@
+use super::ellipse::ellipse_support;
+use super::SupportMap;
+use crate::real::{Real, V2};
+use crate::transform::check_length;
+use crate::Error;
+
+/// The upper half (y >= 0) of an axis-aligned ellipse centered on the local
+/// origin, as dyn4j's `HalfEllipse`: flat side on the x axis, dome up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HalfEllipse<R: Real> {
+    /// Half the width and the full height (the vertical semi-axis).
+    axes: V2<R>,
+    centroid: V2<R>,
+}
+
+impl<R: Real> HalfEllipse<R> {
+    /// `width` (the flat side) and `height` (of the dome), both > 0.
+    pub fn new(width: R, height: R) -> Result<Self, Error> {
+        let axes = V2::new(check_length(width)? * R::HALF, check_length(height)?);
+        // Centroid of a half ellipse: 4b / (3 pi) above the flat side.
+        let cy = R::from_f64(4.0 / (3.0 * core::f64::consts::PI)) * axes.y;
+        Ok(Self {
+            axes,
+            centroid: V2::new(R::ZERO, cy),
+        })
+    }
+    pub fn half_width(&self) -> R {
+        self.axes.x
+    }
+    pub fn height(&self) -> R {
+        self.axes.y
+    }
+}
+
+impl<R: Real> SupportMap<R> for HalfEllipse<R> {
+    #[inline]
+    fn support(&self, d: R::Vector) -> R::Vector {
+        self.support_feature(d).0
+    }
+    #[inline]
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        let d = V2::from_glam(direction);
+        if d.y > R::ZERO {
+            (ellipse_support(self.axes, d).to_glam(), super::NO_FEATURE)
+        } else if d.x >= R::ZERO {
+            (R::vector(self.axes.x, R::ZERO), 1)
+        } else {
+            (R::vector(-self.axes.x, R::ZERO), 0)
+        }
+    }
+    fn center(&self) -> R::Vector {
+        self.centroid.to_glam()
+    }
+    fn bounding_radius(&self) -> R {
+        // |p - c| <= |p| + |c| for every point p of the half ellipse.
+        self.axes.x.max(self.axes.y) + self.centroid.y
+    }
+}

@@ -1,0 +1,200 @@
+//! Shapes as support maps: the trait GJK, EPA and the GJK ray cast query, and
+//! one module per shape.
+//!
+//! Every shape is a *core* (a point, a segment, a polygon or a curved convex
+//! set) swept by a *radius*. Circles and capsules are a point and a segment
+//! with a radius, so the queries handle their curvature in closed form and
+//! spend no iterations on it: they come out as exact as polygons.
+
+mod capsule;
+mod circle;
+mod ellipse;
+mod half_ellipse;
+mod polygon;
+mod rectangle;
+mod rounded;
+mod segment;
+mod slice;
+mod triangle;
+
+pub use capsule::Capsule;
+pub use circle::Circle;
+pub use ellipse::Ellipse;
+pub use half_ellipse::HalfEllipse;
+pub use polygon::Polygon;
+pub use rectangle::Rectangle;
+pub use rounded::Rounded;
+pub use segment::Segment;
+pub use slice::Slice;
+pub use triangle::Triangle;
+
+use crate::ray::LocalRayCast;
+use crate::real::{Real, V2};
+
+/// The feature id of a support point that is not one of finitely many
+/// vertices (a point on a curve).
+pub const NO_FEATURE: u32 = u32::MAX;
+
+/// A convex shape, given by its support function.
+///
+/// Coordinates are in the shape's local frame, measured from
+/// [`reference_point`](Self::reference_point) (the origin unless the shape
+/// says otherwise). Storing geometry relative to a point on the shape is what
+/// keeps full precision for shapes given in world coordinates far from the
+/// origin: differences of nearby floats are exact.
+///
+/// Only [`support`](Self::support), [`center`](Self::center) and
+/// [`bounding_radius`](Self::bounding_radius) are required.
+pub trait SupportMap<R: Real> {
+    /// The farthest point of the core along `direction` (never zero, not
+    /// necessarily unit), relative to the reference point.
+    fn support(&self, direction: R::Vector) -> R::Vector;
+
+    /// A point inside the core, relative to the reference point. GJK's first
+    /// search direction runs from A's center to B's.
+    fn center(&self) -> R::Vector;
+
+    /// An upper bound of the distance from `center` to any point of the
+    /// shape, radius included. Relative tolerances are measured against it.
+    fn bounding_radius(&self) -> R;
+
+    /// The radius the core is swept by. Zero for sharp shapes.
+    fn radius(&self) -> R {
+        R::ZERO
+    }
+
+    /// Where, in local coordinates, the coordinates of `support` and
+    /// `center` are measured from.
+    fn reference_point(&self) -> R::Vector {
+        R::vector(R::ZERO, R::ZERO)
+    }
+
+    /// The support point and an id of the vertex it is, for cores that are
+    /// polytopes; [`NO_FEATURE`] for a point on a curve. With ids, GJK and EPA
+    /// stop exactly when a vertex repeats instead of on a tolerance.
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        (self.support(direction), NO_FEATURE)
+    }
+
+    /// An exact ray cast, for shapes that have a closed form: a ray in the
+    /// local frame (origin relative to the reference point, unit direction),
+    /// `max_length` infinite when unbounded. `None` (the default) makes the ray
+    /// cast iterate on the support function.
+    fn cast_local_ray(
+        &self,
+        origin: R::Vector,
+        direction: R::Vector,
+        max_length: R,
+    ) -> Option<LocalRayCast<R>> {
+        let _ = (origin, direction, max_length);
+        None
+    }
+}
+
+impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
+    fn support(&self, direction: R::Vector) -> R::Vector {
+        (**self).support(direction)
+    }
+    fn center(&self) -> R::Vector {
+        (**self).center()
+    }
+    fn bounding_radius(&self) -> R {
+        (**self).bounding_radius()
+    }
+    fn radius(&self) -> R {
+        (**self).radius()
+    }
+    fn reference_point(&self) -> R::Vector {
+        (**self).reference_point()
+    }
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        (**self).support_feature(direction)
+    }
+    fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        (**self).cast_local_ray(o, d, max)
+    }
+}
+
+/// Support of a polytope core given as a vertex slice: a linear scan for few
+/// vertices, an O(log n) search over edge directions for many.
+pub(crate) fn polytope_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
+    const LINEAR_SCAN_MAX: usize = 24;
+    let n = vertices.len();
+    if n <= LINEAR_SCAN_MAX {
+        let mut best = 0;
+        let mut best_dot = vertices[0].dot(d);
+        for (i, v) in vertices.iter().enumerate().skip(1) {
+            let dot = v.dot(d);
+            if dot > best_dot {
+                best = i;
+                best_dot = dot;
+            }
+        }
+        return best;
+    }
+    hill_climb(vertices, d, angular_search(vertices, d))
+}
+
+/// The support vertex is the start of the first edge whose direction, going
+/// counter-clockwise, reaches the tangent `perp(d)`. Edge directions of a
+/// convex polygon turn monotonically through one full turn, so angles measured
+/// from edge 0 are sorted and a binary search finds that edge. Rounding can make
+/// the comparison wrong for nearly parallel edges; the hill climb mends that.
+fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
+    let n = vertices.len();
+    let edge = |i: usize| vertices[if i + 1 == n { 0 } else { i + 1 }] - vertices[i];
+    let e0 = edge(0);
+    let tangent = d.perp();
+    // Half-turn index of u relative to e0: 0 for [0, pi), 1 for [pi, 2 pi).
+    let half = |u: V2<R>| {
+        let c = e0.cross(u);
+        !(c > R::ZERO || (c == R::ZERO && e0.dot(u) > R::ZERO))
+    };
+    let angle_less = |u: V2<R>, hu: bool, w: V2<R>, hw: bool| {
+        if hu != hw {
+            !hu
+        } else {
+            u.cross(w) > R::ZERO
+        }
+    };
+    let ht = half(tangent);
+    // Find the first edge k with angle(e_k) >= angle(tangent); edges 1..n.
+    let (mut lo, mut hi) = (1usize, n);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        let e = edge(mid);
+        if angle_less(e, half(e), tangent, ht) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    if lo == n {
+        0
+    } else {
+        lo
+    }
+}
+
+/// Walk to the neighbour with the larger dot product until neither is larger.
+/// Strictly increasing values cannot cycle, and the walk is capped at n steps.
+fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize) -> usize {
+    let n = vertices.len();
+    let mut k = start;
+    let mut best = vertices[k].dot(d);
+    for _ in 0..n {
+        let next = if k + 1 == n { 0 } else { k + 1 };
+        let prev = if k == 0 { n - 1 } else { k - 1 };
+        let (dn, dp) = (vertices[next].dot(d), vertices[prev].dot(d));
+        if dn > best && dn >= dp {
+            k = next;
+            best = dn;
+        } else if dp > best {
+            k = prev;
+            best = dp;
+        } else {
+            break;
+        }
+    }
+    k
+}

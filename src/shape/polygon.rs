@@ -1,0 +1,186 @@
+use super::{polytope_support, SupportMap};
+use crate::ray::{cast_ray_polygon, LocalRayCast};
+use crate::real::{orientation, Real, V2};
+use crate::transform::check_point;
+use crate::Error;
+use heapless::Vec;
+
+/// A convex polygon of at most `N` vertices, stored inline (no allocator).
+///
+/// Vertices are kept counter-clockwise and relative to the first one (the
+/// reference point), so a polygon given in world coordinates far from the
+/// origin loses no precision.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polygon<R: Real, const N: usize> {
+    reference: V2<R>,
+    vertices: Vec<V2<R>, N>,
+    center: V2<R>,
+    bounding_radius: R,
+}
+
+impl<R: Real, const N: usize> Polygon<R, N> {
+    /// A convex polygon from its vertices in either winding. Rejects fewer
+    /// than 3 or more than `N` vertices, non-finite or out-of-range
+    /// coordinates, repeated consecutive vertices, zero area, and any reflex
+    /// turn or second winding. Collinear vertices on an edge are accepted.
+    pub fn new(points: &[R::Vector]) -> Result<Self, Error> {
+        if points.len() < 3 {
+            return Err(Error::TooFewVertices);
+        }
+        if points.len() > N {
+            return Err(Error::OverCapacity);
+        }
+        let mut world: Vec<V2<R>, N> = Vec::new();
+        for &p in points {
+            let p = check_point(V2::from_glam(p))?;
+            // Capacity was checked above.
+            let _ = world.push(p);
+        }
+        let n = world.len();
+        for i in 0..n {
+            if world[i] == world[(i + 1) % n] {
+                return Err(Error::DuplicateVertex);
+            }
+        }
+        let winding = convex_winding(&world)?;
+        if winding < 0 {
+            world.reverse();
+        }
+        let reference = world[0];
+        let mut vertices: Vec<V2<R>, N> = Vec::new();
+        for &p in world.iter() {
+            let _ = vertices.push(p - reference);
+        }
+        let center = area_centroid(&vertices);
+        let mut r2 = R::ZERO;
+        for &v in vertices.iter() {
+            r2 = r2.max((v - center).length_squared());
+        }
+        Ok(Self {
+            reference,
+            vertices,
+            center,
+            bounding_radius: r2.sqrt(),
+        })
+    }
+
+    /// A regular polygon of `count` vertices on a circle of `radius` about the
+    /// origin, the first vertex on the +x axis.
+    pub fn regular(count: usize, radius: R) -> Result<Self, Error> {
+        crate::transform::check_length(radius)?;
+        if count < 3 {
+            return Err(Error::TooFewVertices);
+        }
+        if count > N {
+            return Err(Error::OverCapacity);
+        }
+        let mut points: Vec<R::Vector, N> = Vec::new();
+        for i in 0..count {
+            let angle = R::from_f64(core::f64::consts::TAU * i as f64 / count as f64);
+            let _ = points.push(R::vector(radius * angle.cos(), radius * angle.sin()));
+        }
+        Self::new(&points)
+    }
+
+    pub fn len(&self) -> usize {
+        self.vertices.len()
+    }
+    /// Always false: a polygon has at least 3 vertices.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+    /// Vertex `i` (counter-clockwise order) in local coordinates.
+    pub fn vertex(&self, i: usize) -> Option<R::Vector> {
+        self.vertices.get(i).map(|&v| (v + self.reference).to_glam())
+    }
+    /// The area centroid in local coordinates.
+    pub fn centroid(&self) -> R::Vector {
+        (self.center + self.reference).to_glam()
+    }
+
+}
+
+/// +1 for a counter-clockwise convex polygon, -1 for a clockwise one.
+/// Every turn must go the same way (collinear turns allowed) and the edge
+/// directions must wind once: a convex polygon's edge x-components change
+/// sign at most twice around the loop, a pentagram's more often.
+fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
+    let n = p.len();
+    let (mut left, mut right) = (false, false);
+    for i in 0..n {
+        let turn = orientation(p[i], p[(i + 1) % n], p[(i + 2) % n]);
+        left |= turn > R::ZERO;
+        right |= turn < R::ZERO;
+    }
+    if left && right {
+        return Err(Error::NotConvex);
+    }
+    if !left && !right {
+        return Err(Error::Degenerate);
+    }
+    let sign_changes = |component: fn(V2<R>) -> R| {
+        let mut changes = 0;
+        let mut last = R::ZERO;
+        for i in 0..=n {
+            let e = p[(i + 1) % n] - p[i % n];
+            let c = component(e);
+            if c != R::ZERO {
+                if last != R::ZERO && (c > R::ZERO) != (last > R::ZERO) {
+                    changes += 1;
+                }
+                last = c;
+            }
+        }
+        changes
+    };
+    if sign_changes(|e| e.x) > 2 || sign_changes(|e| e.y) > 2 {
+        return Err(Error::NotConvex);
+    }
+    Ok(if left { 1 } else { -1 })
+}
+
+/// Area centroid of a counter-clockwise polygon given relative to its first
+/// vertex (so the fan from vertex 0 needs no further shift).
+pub(crate) fn area_centroid<R: Real>(v: &[V2<R>]) -> V2<R> {
+    let mut area2 = R::ZERO;
+    let mut acc = V2::zero();
+    for i in 1..v.len() - 1 {
+        let a = v[i].cross(v[i + 1]);
+        area2 += a;
+        acc = acc + (v[i] + v[i + 1]) * a;
+    }
+    if area2 > R::ZERO {
+        acc * (R::ONE / (R::from_u32(3) * area2))
+    } else {
+        // Unreachable for validated polygons; the vertex mean is a safe center.
+        let mut m = V2::zero();
+        for &p in v {
+            m = m + p;
+        }
+        m * (R::ONE / R::from_u32(v.len() as u32))
+    }
+}
+
+impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
+    #[inline]
+    fn support(&self, direction: R::Vector) -> R::Vector {
+        self.support_feature(direction).0
+    }
+    #[inline]
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        let i = polytope_support(&self.vertices, V2::from_glam(direction));
+        (self.vertices[i].to_glam(), i as u32)
+    }
+    fn center(&self) -> R::Vector {
+        self.center.to_glam()
+    }
+    fn bounding_radius(&self) -> R {
+        self.bounding_radius
+    }
+    fn reference_point(&self) -> R::Vector {
+        self.reference.to_glam()
+    }
+    fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        Some(cast_ray_polygon(&self.vertices, V2::from_glam(o), V2::from_glam(d), max))
+    }
+}

@@ -1,0 +1,62 @@
+use super::SupportMap;
+use crate::ray::{cast_ray_polygon, LocalRayCast};
+use crate::real::{Real, V2};
+use crate::transform::check_length;
+use crate::Error;
+
+/// An axis-aligned rectangle centered on the local origin (rotate it with
+/// its transform). Its support is two sign tests, not a vertex scan.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rectangle<R: Real> {
+    half: V2<R>,
+}
+
+impl<R: Real> Rectangle<R> {
+    /// A `width` by `height` rectangle (both > 0), as dyn4j's `Rectangle`.
+    pub fn new(width: R, height: R) -> Result<Self, Error> {
+        Ok(Self {
+            half: V2::new(check_length(width)? * R::HALF, check_length(height)? * R::HALF),
+        })
+    }
+    pub fn width(&self) -> R {
+        self.half.x * R::TWO
+    }
+    pub fn height(&self) -> R {
+        self.half.y * R::TWO
+    }
+    fn corners(&self) -> [V2<R>; 4] {
+        let (x, y) = (self.half.x, self.half.y);
+        [V2::new(-x, -y), V2::new(x, -y), V2::new(x, y), V2::new(-x, y)]
+    }
+}
+
+impl<R: Real> SupportMap<R> for Rectangle<R> {
+    #[inline]
+    fn support(&self, d: R::Vector) -> R::Vector {
+        self.support_feature(d).0
+    }
+    #[inline]
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        let d = V2::<R>::from_glam(direction);
+        // Ids follow the counter-clockwise corner order from (-x, -y).
+        let (px, py) = (d.x > R::ZERO, d.y > R::ZERO);
+        let id = match (px, py) {
+            (false, false) => 0,
+            (true, false) => 1,
+            (true, true) => 2,
+            (false, true) => 3,
+        };
+        let x = if px { self.half.x } else { -self.half.x };
+        let y = if py { self.half.y } else { -self.half.y };
+        (R::vector(x, y), id)
+    }
+    fn center(&self) -> R::Vector {
+        R::vector(R::ZERO, R::ZERO)
+    }
+    fn bounding_radius(&self) -> R {
+        self.half.length()
+    }
+    fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        Some(cast_ray_polygon(&self.corners(), V2::from_glam(o), V2::from_glam(d), max))
+    }
+}

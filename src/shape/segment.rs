@@ -1,0 +1,66 @@
+use super::SupportMap;
+use crate::ray::{cast_ray_capsule, LocalRayCast};
+use crate::real::{Real, V2};
+use crate::transform::check_point;
+use crate::Error;
+
+/// A line segment: a two-vertex core with no radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment<R: Real> {
+    /// The first end point: the reference point.
+    pub(crate) start: V2<R>,
+    /// The second end point relative to the first.
+    pub(crate) delta: V2<R>,
+}
+
+impl<R: Real> Segment<R> {
+    /// The segment from `a` to `b`, which must differ.
+    pub fn new(a: R::Vector, b: R::Vector) -> Result<Self, Error> {
+        let start = check_point(V2::from_glam(a))?;
+        let end = check_point(V2::from_glam(b))?;
+        let delta = end - start;
+        if delta.x == R::ZERO && delta.y == R::ZERO {
+            return Err(Error::ZeroLength);
+        }
+        Ok(Self { start, delta })
+    }
+    /// The end points in local coordinates.
+    pub fn points(&self) -> (R::Vector, R::Vector) {
+        (self.start.to_glam(), (self.start + self.delta).to_glam())
+    }
+    pub fn length(&self) -> R {
+        self.delta.length()
+    }
+    #[inline]
+    pub(crate) fn support_local(&self, d: V2<R>) -> (V2<R>, u32) {
+        if self.delta.dot(d) > R::ZERO {
+            (self.delta, 1)
+        } else {
+            (V2::zero(), 0)
+        }
+    }
+}
+
+impl<R: Real> SupportMap<R> for Segment<R> {
+    #[inline]
+    fn support(&self, direction: R::Vector) -> R::Vector {
+        self.support_local(V2::from_glam(direction)).0.to_glam()
+    }
+    #[inline]
+    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+        let (p, id) = self.support_local(V2::from_glam(direction));
+        (p.to_glam(), id)
+    }
+    fn center(&self) -> R::Vector {
+        (self.delta * R::HALF).to_glam()
+    }
+    fn bounding_radius(&self) -> R {
+        self.delta.length() * R::HALF
+    }
+    fn reference_point(&self) -> R::Vector {
+        self.start.to_glam()
+    }
+    fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        Some(cast_ray_capsule(V2::zero(), self.delta, R::ZERO, V2::from_glam(o), V2::from_glam(d), max))
+    }
+}

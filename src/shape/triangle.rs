@@ -1,0 +1,41 @@
+use super::{Polygon, SupportMap};
+use crate::ray::LocalRayCast;
+use crate::real::Real;
+use crate::Error;
+
+/// A triangle: a three-vertex [`Polygon`] with its own constructor.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Triangle<R: Real>(Polygon<R, 3>);
+
+impl<R: Real> Triangle<R> {
+    /// Three distinct, non-collinear points in either winding.
+    pub fn new(a: R::Vector, b: R::Vector, c: R::Vector) -> Result<Self, Error> {
+        Polygon::new(&[a, b, c]).map(Self)
+    }
+    pub fn polygon(&self) -> &Polygon<R, 3> {
+        &self.0
+    }
+}
+
+impl<R: Real> SupportMap<R> for Triangle<R> {
+    #[inline]
+    fn support(&self, d: R::Vector) -> R::Vector {
+        self.0.support(d)
+    }
+    #[inline]
+    fn support_feature(&self, d: R::Vector) -> (R::Vector, u32) {
+        self.0.support_feature(d)
+    }
+    fn center(&self) -> R::Vector {
+        self.0.center()
+    }
+    fn bounding_radius(&self) -> R {
+        self.0.bounding_radius()
+    }
+    fn reference_point(&self) -> R::Vector {
+        self.0.reference_point()
+    }
+    fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        self.0.cast_local_ray(o, d, max)
+    }
+}

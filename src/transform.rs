@@ -1,0 +1,132 @@
+//! Placement of a shape: a rotation followed by a translation.
+
+use crate::real::{Real, V2};
+use crate::Error;
+
+/// A rigid transform: `world = rotation * local + translation`.
+///
+/// The rotation is kept as its cosine and sine, as dyn4j does, so a
+/// transform built from an angle is computed once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transform<R: Real> {
+    pub(crate) translation: V2<R>,
+    pub(crate) cos: R,
+    pub(crate) sin: R,
+}
+
+impl<R: Real> Default for Transform<R> {
+    fn default() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl<R: Real> Transform<R> {
+    /// No rotation, no translation.
+    pub const IDENTITY: Self = Self {
+        translation: V2::new(R::ZERO, R::ZERO),
+        cos: R::ONE,
+        sin: R::ZERO,
+    };
+
+    /// A translation and a rotation by `angle` radians (counter-clockwise).
+    pub fn new(translation: R::Vector, angle: R) -> Result<Self, Error> {
+        if !angle.is_finite() {
+            return Err(Error::NonFinite);
+        }
+        let mut t = Self::from_translation(translation)?;
+        if angle != R::ZERO {
+            t.cos = angle.cos();
+            t.sin = angle.sin();
+        }
+        Ok(t)
+    }
+
+    /// A pure translation.
+    pub fn from_translation(translation: R::Vector) -> Result<Self, Error> {
+        let t = V2::from_glam(translation);
+        check_point(t)?;
+        Ok(Self {
+            translation: t,
+            ..Self::IDENTITY
+        })
+    }
+
+    /// A translation and a rotation given by its cosine and sine, which are
+    /// normalised (so `(2, 0)` is no rotation) and must not both be zero.
+    pub fn from_cos_sin(translation: R::Vector, cos: R, sin: R) -> Result<Self, Error> {
+        let mut t = Self::from_translation(translation)?;
+        let r = V2::new(cos, sin);
+        if !r.is_finite() {
+            return Err(Error::NonFinite);
+        }
+        let len = r.length();
+        if len == R::ZERO {
+            return Err(Error::ZeroLength);
+        }
+        if len != R::ONE {
+            t.cos = cos / len;
+            t.sin = sin / len;
+        } else {
+            t.cos = cos;
+            t.sin = sin;
+        }
+        Ok(t)
+    }
+
+    pub fn translation(&self) -> R::Vector {
+        self.translation.to_glam()
+    }
+    pub fn cos(&self) -> R {
+        self.cos
+    }
+    pub fn sin(&self) -> R {
+        self.sin
+    }
+    /// The rotation angle in (-pi, pi].
+    pub fn angle(&self) -> R {
+        self.sin.atan2(self.cos)
+    }
+
+    /// Local point to world.
+    pub fn transform_point(&self, p: R::Vector) -> R::Vector {
+        (self.rotate(V2::from_glam(p)) + self.translation).to_glam()
+    }
+    /// World point to local.
+    pub fn inverse_transform_point(&self, p: R::Vector) -> R::Vector {
+        self.inverse_rotate(V2::from_glam(p) - self.translation).to_glam()
+    }
+
+    #[inline(always)]
+    pub(crate) fn rotate(&self, v: V2<R>) -> V2<R> {
+        V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
+    }
+    #[inline(always)]
+    pub(crate) fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
+        V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
+    }
+
+}
+
+/// A point must be finite and within [`Real::MAX_COORDINATE`].
+pub(crate) fn check_point<R: Real>(p: V2<R>) -> Result<V2<R>, Error> {
+    if !p.is_finite() {
+        Err(Error::NonFinite)
+    } else if p.max_abs() > R::MAX_COORDINATE {
+        Err(Error::OutOfRange)
+    } else {
+        Ok(p)
+    }
+}
+
+/// A length (radius, half-extent) must be finite, positive and within range.
+pub(crate) fn check_length<R: Real>(r: R) -> Result<R, Error> {
+    if !r.is_finite() {
+        Err(Error::NonFinite)
+    } else if r <= R::ZERO {
+        Err(Error::NonPositive)
+    } else if r > R::MAX_COORDINATE {
+        Err(Error::OutOfRange)
+    } else {
+        Ok(r)
+    }
+}
