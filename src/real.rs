@@ -223,8 +223,6 @@ impl<R: Real> V2<R> {
     pub fn max_abs(self) -> R {
         self.x.abs().max(self.y.abs())
     }
-    #[inline(always)]
-
 }
 
 impl<R: Real> Add for V2<R> {
@@ -277,6 +275,11 @@ pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
     // comes from the tail of rounding errors, which is itself computed
     // almost exactly.
     main + tail
+}
+
+/// Whether `a - b` is representable exactly (so shifting by `b` loses nothing).
+pub(crate) fn is_exact_difference<R: Real>(a: R, b: R) -> bool {
+    two_diff(a, b).1 == R::ZERO
 }
 
 /// Knuth's TwoSum applied to `a - b`: `hi + lo == a - b` exactly.

@@ -46,7 +46,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         if winding < 0 {
             world.reverse();
         }
-        let reference = world[0];
+        let reference = choose_reference(&world);
         let mut vertices: Vec<V2<R>, N> = Vec::new();
         for &p in world.iter() {
             let _ = vertices.push(p - reference);
@@ -98,6 +98,25 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         (self.center + self.reference).to_glam()
     }
 
+}
+
+/// The point vertices are stored relative to. Far from the origin (or
+/// wherever the shift is exact), the first vertex: differences of nearby
+/// floats are exact, and the shape keeps its own precision, not its
+/// position's. Near the origin, the origin itself: the coordinates as given
+/// are exact already, and a shift would round them.
+pub(crate) fn choose_reference<R: Real>(points: &[V2<R>]) -> V2<R> {
+    let first = points[0];
+    let exact = points.iter().all(|&p| crate::real::is_exact_difference(p.x, first.x) && crate::real::is_exact_difference(p.y, first.y));
+    let mut extent = R::ZERO;
+    for &p in points {
+        extent = extent.max((p - first).max_abs());
+    }
+    if exact || first.max_abs() > extent * R::from_u32(4) {
+        first
+    } else {
+        V2::zero()
+    }
 }
 
 /// +1 for a counter-clockwise convex polygon, -1 for a clockwise one.
