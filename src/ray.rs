@@ -117,21 +117,18 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
     RayCast::closed_form(hit(o, d, t, normal))
 }
 
-/// Ray against the segment `a`-`a + delta` swept by `r` (r = 0: the bare
-/// segment). The first hit on the union of the side band and the two end
-/// disks is the first hit of any of them.
+/// Ray against the segment `a`-`a + delta` swept by `r` (> 0). The first hit
+/// on the union of the side band and the two end disks is the first hit of
+/// any of them.
 pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    if r <= R::ZERO {
+        return cast_ray_segment(a, delta, o, d, max);
+    }
     let len2 = delta.length_squared();
     let rel = o - a;
     // Closest point of the core to the ray origin decides "inside".
     let t_axis = (rel.dot(delta) / len2).max(R::ZERO).min(R::ONE);
-    let offset = rel - delta * t_axis;
-    let inside = if r > R::ZERO {
-        offset.length() <= r
-    } else {
-        delta.cross(rel) == R::ZERO && t_axis > R::ZERO && t_axis < R::ONE || offset == V2::zero()
-    };
-    if inside {
+    if (rel - delta * t_axis).length() <= r {
         return RayCast::closed_form(RayOutcome::Inside);
     }
     let length = len2.sqrt();
@@ -146,26 +143,61 @@ pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, 
     // The two sides, lines parallel to the core at distance r.
     let h = side.dot(rel);
     let dn = side.dot(d);
-    if dn != R::ZERO {
-        let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
-        if toward * dn < R::ZERO {
-            let t = (h.abs() - r) / dn.abs();
-            let along = axis.dot(rel + d * t);
-            if along >= R::ZERO && along <= length {
-                consider(t, side * toward);
-            }
+    let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
+    if toward * dn < R::ZERO {
+        let t = (h.abs() - r) / dn.abs();
+        let along = axis.dot(rel + d * t);
+        if along >= R::ZERO && along <= length {
+            consider(t, side * toward);
         }
-    } else if r == R::ZERO && h == R::ZERO {
-        // Along the bare segment's own line: it meets the nearer end.
-        let along = axis.dot(rel);
-        let t = if axis.dot(d) > R::ZERO { -along } else { along - length };
-        consider(t, -d);
     }
-    if r > R::ZERO {
-        for center in [a, a + delta] {
-            if let RayOutcome::Hit(hit) = cast_ray_disk(center, r, o, d, max).outcome {
-                consider(hit.distance, V2::from_glam(hit.normal));
+    for center in [a, a + delta] {
+        if let RayOutcome::Hit(hit) = cast_ray_disk(center, r, o, d, max).outcome {
+            consider(hit.distance, V2::from_glam(hit.normal));
+        }
+    }
+    RayCast::closed_form(match best {
+        Some((t, normal)) => hit(o, d, t, normal),
+        None => RayOutcome::Miss,
+    })
+}
+
+/// Ray against the bare segment `a`-`a + delta`. A segment has no inside, so
+/// a ray nearly along its line is ill-conditioned: an end point the ray
+/// passes within rounding distance of counts as hit, as a user expects of a
+/// ray aimed along a wall.
+fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let rel = a - o;
+    let slack = R::from_u32(4) * R::EPSILON;
+    // An origin on the segment (to rounding) is on the shape.
+    let along = -rel.dot(delta);
+    let scale = rel.length() + delta.length();
+    if along >= R::ZERO && along <= delta.length_squared() && delta.cross(rel).abs() <= slack * scale * delta.length() {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let denominator = d.cross(delta);
+    let mut best: Option<(R, V2<R>)> = None;
+    if denominator != R::ZERO {
+        let t = rel.cross(delta) / denominator;
+        let s = rel.cross(d) / denominator;
+        if s >= R::ZERO && s <= R::ONE && t >= R::ZERO && t <= max {
+            if t == R::ZERO {
+                return RayCast::closed_form(RayOutcome::Inside);
             }
+            // The face normal on the side the ray comes from.
+            let n = delta.perp();
+            let n = if n.dot(d) > R::ZERO { -n } else { n };
+            best = Some((t, n.try_normalize().unwrap_or(-d)));
+        }
+    }
+    for end in [rel, rel + delta] {
+        let t = end.dot(d);
+        let off = d.cross(end).abs();
+        if t >= R::ZERO && t <= max && off <= slack * (end.length() + delta.length()) && best.is_none_or(|(bt, _)| t < bt) {
+            if t == R::ZERO {
+                return RayCast::closed_form(RayOutcome::Inside);
+            }
+            best = Some((t, -d));
         }
     }
     RayCast::closed_form(match best {

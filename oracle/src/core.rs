@@ -9,7 +9,6 @@
 use crate::exact::{big_to_f64_shifted, Q};
 use crate::shape::ExactShape;
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -26,9 +25,9 @@ type V = [BigInt; 2];
 /// point and the formula has a handful of roundings on values <= 4). The prefilters keep
 /// every candidate whose float value lies within `2 * bound` of the float optimum, with
 /// bounds taken 10^4 times larger than these estimates (1e-11 |n|_1 for dots, 1e-10 for
-/// distances, 4e-11 for depths). The exact optimum's float value is at most
-/// `bound` above its exact value <= the exact value of the float optimum <= float optimum
-/// + `bound`, so the exact optimum is always kept. Directions whose float image could
+/// distances, 4e-11 for depths). The exact optimum's float value is at most `bound`
+/// above its exact value, which is at most the exact value of the float optimum, which
+/// is at most the float optimum plus `bound`; so the exact optimum is always kept. Directions whose float image could
 /// underflow (|n|_1 < 1e-250 after scaling) or overflow are always evaluated exactly.
 pub(crate) struct Frame {
     pub a: Vec<V>,
@@ -41,7 +40,7 @@ pub(crate) struct Frame {
 
 impl Frame {
     pub fn new(sa: &ExactShape, sb: &ExactShape) -> Frame {
-        let l = sa.den.lcm(&sb.den);
+        let l = crate::exact::lcm_fast(&sa.den, &sb.den);
         let scale = |pts: &[V], k: BigInt| -> Vec<V> {
             if k.is_one() {
                 pts.to_vec()
@@ -173,7 +172,14 @@ fn directions(fr: &Frame) -> Vec<Dir> {
 
 /// Exact extreme of p·n over `pts` (max if `want_max`), evaluating exactly only the
 /// vertices whose float value is within `2*err` of the float extreme.
-fn exact_extreme(pts: &[V], fp: &[[f64; 2]], d: &Dir, err: f64, exact_all: bool, want_max: bool) -> BigInt {
+fn exact_extreme(
+    pts: &[V],
+    fp: &[[f64; 2]],
+    d: &Dir,
+    err: f64,
+    exact_all: bool,
+    want_max: bool,
+) -> BigInt {
     let vals: Vec<f64> = fp.iter().map(|p| fdot(p, &d.nf)).collect();
     let best = if want_max {
         vals.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
@@ -303,11 +309,7 @@ pub(crate) fn core_relation(fr: &Frame) -> CoreRel {
             }
         })
         .collect();
-    let vmin = fv
-        .iter()
-        .flatten()
-        .cloned()
-        .fold(f64::INFINITY, f64::min);
+    let vmin = fv.iter().flatten().cloned().fold(f64::INFINITY, f64::min);
     let mut best: Vec<usize> = Vec::new();
     let mut best_o = BigInt::zero();
     let mut best_nn = BigInt::one();
@@ -390,7 +392,12 @@ fn exact_ps(p: &V, a: &V, b: &V) -> (BigInt, BigInt, BigInt, BigInt) {
 /// always involves a vertex of one set, so it is the minimum over vertex-of-one vs
 /// edge-of-other (vertex vs vertex for two points).
 fn apart(fr: &Frame) -> CoreRel {
-    let to_real = |p: &V| [Q::new(p[0].clone(), fr.l.clone()), Q::new(p[1].clone(), fr.l.clone())];
+    let to_real = |p: &V| {
+        [
+            Q::new(p[0].clone(), fr.l.clone()),
+            Q::new(p[1].clone(), fr.l.clone()),
+        ]
+    };
     let l2 = &fr.l * &fr.l;
     if fr.a.len() == 1 && fr.b.len() == 1 {
         let w = sub(&fr.b[0], &fr.a[0]);
@@ -418,7 +425,11 @@ fn apart(fr: &Frame) -> CoreRel {
         if finite && fd > dmin + 1e-10 {
             continue;
         }
-        let (pts, opts) = if vert_a { (&fr.a, &fr.b) } else { (&fr.b, &fr.a) };
+        let (pts, opts) = if vert_a {
+            (&fr.a, &fr.b)
+        } else {
+            (&fr.b, &fr.a)
+        };
         let k = opts.len();
         let (num, den, tn, td) = exact_ps(&pts[i], &opts[j], &opts[(j + 1) % k]);
         let better = match &best {
@@ -430,7 +441,11 @@ fn apart(fr: &Frame) -> CoreRel {
         }
     }
     let (num, den, vert_a, i, j, tn, td) = best.expect("no distance candidates");
-    let (pts, opts) = if vert_a { (&fr.a, &fr.b) } else { (&fr.b, &fr.a) };
+    let (pts, opts) = if vert_a {
+        (&fr.a, &fr.b)
+    } else {
+        (&fr.b, &fr.a)
+    };
     let k = opts.len();
     let (e0, e1) = (&opts[j], &opts[(j + 1) % k]);
     let t = Q::new(tn, td);

@@ -7,13 +7,28 @@
 //! correctly rounded value of the expression.
 
 use num_bigint::{BigInt, BigUint, Sign};
-use num_integer::{Integer, Roots};
+use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
 /// Exact rational number.
 pub type Q = BigRational;
+
+/// Least common multiple, with a fast path for powers of two (the usual case: every
+/// coordinate built from floats is dyadic).
+pub fn lcm_fast(a: &BigInt, b: &BigInt) -> BigInt {
+    let pow2 = |x: &BigInt| x.is_positive() && x.trailing_zeros() == Some(x.bits() - 1);
+    if pow2(a) && pow2(b) {
+        if a >= b {
+            a.clone()
+        } else {
+            b.clone()
+        }
+    } else {
+        a.lcm(b)
+    }
+}
 
 /// Exact value of a finite `f64` (every finite float is a dyadic rational).
 ///
@@ -152,9 +167,16 @@ pub fn sqrt_to_f64(x: &Q) -> f64 {
 }
 
 fn dyadic(m: BigUint, s: i64) -> Q {
-    let m = BigInt::from(m);
+    if m.is_zero() {
+        return Q::zero();
+    }
+    // Reduce by the common power of two directly (no general gcd needed).
+    let tz = m.trailing_zeros().unwrap_or(0) as i64;
+    let k = tz.min(s.max(0));
+    let m = BigInt::from(m >> (k as usize));
+    let s = s - k;
     if s >= 0 {
-        Q::new(m, BigInt::one() << (s as usize))
+        Q::new_raw(m, BigInt::one() << (s as usize))
     } else {
         Q::from_integer(m << ((-s) as usize))
     }
@@ -172,7 +194,11 @@ pub fn sqrt_bounds(x: &Q, bits: u64) -> (Q, Q) {
     let s = bits as i64 + 2 - floor_div2(bp - 1 - bd);
     let (m, exact) = sqrt_scaled(x, s);
     let lo = dyadic(m.clone(), s);
-    let hi = if exact { lo.clone() } else { dyadic(m + 1u32, s) };
+    let hi = if exact {
+        lo.clone()
+    } else {
+        dyadic(m + 1u32, s)
+    };
     (lo, hi)
 }
 

@@ -2,7 +2,6 @@
 
 use crate::exact::{q_from_f64, Q};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -48,7 +47,7 @@ impl ExactShape {
         for v in &verts {
             for c in v {
                 if !(&den % c.denom()).is_zero() {
-                    den = den.lcm(c.denom());
+                    den = crate::exact::lcm_fast(&den, c.denom());
                 }
             }
         }
@@ -148,6 +147,52 @@ fn hull(pts: &[Pt]) -> Vec<Pt> {
     lower
 }
 
+/// A dyadic number `m * 2^e`.
+type Dy = (BigInt, i64);
+
+/// A finite float as `m * 2^e`.
+fn dy_of(x: f64) -> Dy {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    let m = BigInt::from(m);
+    (if bits >> 63 == 1 { -m } else { m }, e)
+}
+
+/// Exact `sum(sign * a * b) + t` of dyadic numbers, as a reduced rational.
+fn dy_sum(terms: &[(i32, &Dy, &Dy)], t: &Dy) -> Q {
+    let mut parts: Vec<Dy> = terms
+        .iter()
+        .map(|(sg, a, b)| {
+            let m = &a.0 * &b.0;
+            (if *sg < 0 { -m } else { m }, a.1 + b.1)
+        })
+        .collect();
+    parts.push(t.clone());
+    let e0 = parts.iter().map(|p| p.1).min().unwrap();
+    let mut m = BigInt::zero();
+    for (pm, pe) in parts {
+        m += pm << ((pe - e0) as usize);
+    }
+    if m.is_zero() {
+        return Q::zero();
+    }
+    let tz = m.trailing_zeros().unwrap_or(0) as i64;
+    let k = tz.min((-e0).max(0));
+    let m = m >> (k as usize);
+    let e = e0 + k;
+    if e >= 0 {
+        Q::from_integer(m << (e as usize))
+    } else {
+        Q::new_raw(m, BigInt::one() << ((-e) as usize))
+    }
+}
+
 /// Exact rigid (or similarity) transform of a shape: `x' = cos*x - sin*y + tx`,
 /// `y' = sin*x + cos*y + ty`, evaluated in rationals. `cos`/`sin` are used as given
 /// (not normalised): the oracle answers for exactly the map the float code was given.
@@ -161,20 +206,27 @@ pub fn transform_shape(s: &Shape, cos: f64, sin: f64, tx: f64, ty: f64) -> Exact
     };
     let r = q_from_f64(radius);
     assert!(!r.is_negative(), "gjk2d-oracle: negative radius");
-    let (c, sn, x, y) = (q_from_f64(cos), q_from_f64(sin), q_from_f64(tx), q_from_f64(ty));
+    let (c, sn, x, y) = (
+        q_from_f64(cos),
+        q_from_f64(sin),
+        q_from_f64(tx),
+        q_from_f64(ty),
+    );
     if c.is_zero() && sn.is_zero() {
         // Degenerate map: everything collapses onto the translation.
         return ExactShape::from_core(vec![[x, y]], r);
     }
     // The map has determinant cos^2 + sin^2 > 0: it preserves orientation, strict
     // convexity and distinctness, so the transformed hull is still a valid core.
+    // Evaluated on dyadic integers (mantissa, exponent): exact, and no gcd per operation.
+    let (dc, ds, dx, dy) = (dy_of(cos), dy_of(sin), dy_of(tx), dy_of(ty));
     let verts = core
         .iter()
         .map(|p| {
-            let (px, py) = (q_from_f64(p[0]), q_from_f64(p[1]));
+            let (px, py) = (dy_of(p[0]), dy_of(p[1]));
             [
-                &c * &px - &sn * &py + &x,
-                &sn * &px + &c * &py + &y,
+                dy_sum(&[(1, &dc, &px), (-1, &ds, &py)], &dx),
+                dy_sum(&[(1, &ds, &px), (1, &dc, &py)], &dy),
             ]
         })
         .collect();
