@@ -51,7 +51,12 @@ impl<R: Real, P> Gjk<R, P> {
     {
         let pair = Pair::new(a, ta, b, tb);
         let margin = self.config.detect_epsilon() * pair.scale;
-        let (intersecting, iterations, status) = intersect(&pair, self.config.max_detect_iterations(), margin, self.config.distance_epsilon());
+        let (intersecting, iterations, status) = intersect(
+            &pair,
+            self.config.max_detect_iterations(),
+            margin,
+            self.config.distance_epsilon(),
+        );
         Detection {
             intersecting,
             iterations,
@@ -62,13 +67,23 @@ impl<R: Real, P> Gjk<R, P> {
     /// The separation of A and B: `None` means they certainly overlap or
     /// touch. A result with `Status::IterationLimit` is a best guess whose
     /// `error_bound` may exceed its distance.
-    pub fn distance<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Separation<R>>
+    pub fn distance<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+    ) -> Option<Separation<R>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+        match core_distance(
+            &pair,
+            self.config.max_distance_iterations(),
+            self.config.distance_epsilon(),
+        ) {
             CoreProximity::Overlapping { .. } => None,
             CoreProximity::Separated(core) => separation(&pair, &core),
         }
@@ -77,21 +92,37 @@ impl<R: Real, P> Gjk<R, P> {
     /// The penetration of A and B: `None` means they are certainly apart.
     /// Cores that overlap go to the penetration solver; rounded shapes whose
     /// cores are apart are resolved in closed form from the core distance.
-    pub fn penetration<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
+    pub fn penetration<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+    ) -> Option<Penetration<R>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
-            CoreProximity::Overlapping { simplex, iterations } => {
+        match core_distance(
+            &pair,
+            self.config.max_distance_iterations(),
+            self.config.distance_epsilon(),
+        ) {
+            CoreProximity::Overlapping {
+                simplex,
+                iterations,
+            } => {
                 let mut points = [SupportPoint {
                     point: R::vector(R::ZERO, R::ZERO),
                     id: 0,
                 }; 3];
                 for (p, v) in points.iter_mut().zip(simplex.vertices()) {
-                    *p = SupportPoint { point: v.w.to_glam(), id: v.id };
+                    *p = SupportPoint {
+                        point: v.w.to_glam(),
+                        id: v.id,
+                    };
                 }
                 let estimate = self.solver.solve(&pair, &points[..simplex.len]);
                 Some(Penetration {
@@ -122,11 +153,21 @@ impl<R: Real, P> Gjk<R, P> {
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
     /// up to `max_length` (zero, negative or infinite: unbounded).
-    pub fn raycast<S>(&self, ray: &Ray<R>, max_length: R, shape: &S, transform: &Transform<R>) -> RayCast<R>
+    pub fn raycast<S>(
+        &self,
+        ray: &Ray<R>,
+        max_length: R,
+        shape: &S,
+        transform: &Transform<R>,
+    ) -> RayCast<R>
     where
         S: SupportMap<R> + ?Sized,
     {
-        let max = if max_length > R::ZERO { max_length } else { R::INFINITY };
+        let max = if max_length > R::ZERO {
+            max_length
+        } else {
+            R::INFINITY
+        };
         let reference = V2::from_glam(shape.reference_point());
         // Into the shape's frame, relative to its reference point: the
         // difference first, so a ray near a far-away shape keeps its precision.
@@ -167,7 +208,9 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let (core_distance, normal) = core.simplex.distance_and_normal(core.v)?;
-    if core_distance <= pair.radius && (core.status.is_converged() || core_distance - core.lower_bound <= R::ZERO) {
+    if core_distance <= pair.radius
+        && (core.status.is_converged() || core_distance - core.lower_bound <= R::ZERO)
+    {
         return None;
     }
     let (a, b) = core.simplex.witness_points();
@@ -179,6 +222,10 @@ where
         point_b: pair.to_world_point(b),
         error_bound: (core_distance - core.lower_bound).max(R::ZERO),
         iterations: core.iterations,
-        status: if core.status == Status::Converged { Status::Converged } else { core.status },
+        status: if core.status == Status::Converged {
+            Status::Converged
+        } else {
+            core.status
+        },
     })
 }

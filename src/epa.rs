@@ -30,7 +30,11 @@ pub struct PenetrationEstimate<R: Real> {
 /// Minkowski difference of two overlapping cores and GJK's final simplex
 /// (1 to 3 points enclosing or touching the origin), find the depth.
 pub trait PenetrationSolver<R: Real> {
-    fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R>;
+    fn solve<M: MinkowskiDifference<R>>(
+        &self,
+        difference: &M,
+        simplex: &[SupportPoint<R>],
+    ) -> PenetrationEstimate<R>;
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
@@ -47,7 +51,11 @@ impl<R: Real, const N: usize> Epa<R, N> {
 }
 
 impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
-    fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
+    fn solve<M: MinkowskiDifference<R>>(
+        &self,
+        difference: &M,
+        simplex: &[SupportPoint<R>],
+    ) -> PenetrationEstimate<R> {
         let mut polytope = heapless::Vec::<Corner<R>, N>::new();
         expand(&mut polytope, &self.config, difference, simplex)
     }
@@ -113,7 +121,10 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
         let unit = n * (R::ONE / len);
         ((p.dot(n) / len).max(R::ZERO), unit)
     } else {
-        (R::ZERO, p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO)))
+        (
+            R::ZERO,
+            p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO)),
+        )
     }
 }
 
@@ -152,7 +163,11 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         [a] => {
             let a = corner(a);
             let b = support(V2::new(R::ONE, R::ZERO));
-            let b = if b.w == a.w { support(V2::new(-R::ONE, R::ZERO)) } else { b };
+            let b = if b.w == a.w {
+                support(V2::new(-R::ONE, R::ZERO))
+            } else {
+                b
+            };
             iterations += 1;
             seed_from_edge(polytope, a, b, &support, &mut iterations)
         }
@@ -190,7 +205,13 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let (p, q) = (items[i], items[j]);
         let (_, normal) = edge(p.w, q.w);
         if iterations >= config.max_iterations() {
-            return estimate(normal, lower, upper - lower, iterations, Status::IterationLimit);
+            return estimate(
+                normal,
+                lower,
+                upper - lower,
+                iterations,
+                Status::IterationLimit,
+            );
         }
         let w = support(normal);
         iterations += 1;
@@ -198,7 +219,13 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         upper = upper.min(reach);
         let repeated = w.id != NO_ID && (w.id == p.id || w.id == q.id);
         if repeated || reach - lower <= tolerance {
-            return estimate(normal, lower, (upper - lower).max(R::ZERO), iterations, Status::Converged);
+            return estimate(
+                normal,
+                lower,
+                (upper - lower).max(R::ZERO),
+                iterations,
+                Status::Converged,
+            );
         }
         let new = Corner {
             w: w.w,
@@ -206,7 +233,13 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             edge_distance: edge(w.w, q.w).0,
         };
         if !polytope.insert_at(j.max(i + 1), new) {
-            return estimate(normal, lower, upper - lower, iterations, Status::CapacityLimit);
+            return estimate(
+                normal,
+                lower,
+                upper - lower,
+                iterations,
+                Status::CapacityLimit,
+            );
         }
         polytope.items_mut()[i].edge_distance = edge(p.w, w.w).0;
     }
@@ -271,7 +304,13 @@ fn remove<R: Copy, S: Storage<R>>(polytope: &mut S, index: usize) {
     }
 }
 
-fn estimate<R: Real>(outward: V2<R>, depth: R, error_bound: R, iterations: u32, status: Status) -> PenetrationEstimate<R> {
+fn estimate<R: Real>(
+    outward: V2<R>,
+    depth: R,
+    error_bound: R,
+    iterations: u32,
+    status: Status,
+) -> PenetrationEstimate<R> {
     PenetrationEstimate {
         // The polytope's outward normal points from B into A's side; B moves
         // the other way.

@@ -20,7 +20,10 @@ use crate::simplex::{Closest, Simplex};
 pub(crate) enum CoreProximity<R: Real> {
     /// The cores overlap or touch; the simplex encloses (or touches) the
     /// origin, EPA's starting point.
-    Overlapping { simplex: Simplex<R>, iterations: u32 },
+    Overlapping {
+        simplex: Simplex<R>,
+        iterations: u32,
+    },
     /// The cores are apart: closest point `v` of the Minkowski difference.
     Separated(CoreSeparation<R>),
 }
@@ -45,7 +48,11 @@ fn first_direction<R: Real>(centers: V2<R>) -> V2<R> {
 }
 
 /// Distance between the cores (radii not included).
-pub(crate) fn core_distance<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreProximity<R>
+pub(crate) fn core_distance<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    max_iterations: u32,
+    epsilon: R,
+) -> CoreProximity<R>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,
@@ -59,12 +66,20 @@ where
     loop {
         let before = simplex;
         let v = match simplex.solve() {
-            Closest::Enclosed => return CoreProximity::Overlapping { simplex, iterations },
+            Closest::Enclosed => {
+                return CoreProximity::Overlapping {
+                    simplex,
+                    iterations,
+                }
+            }
             Closest::Point(v) => v,
         };
         let vv = v.length_squared();
         if vv == R::ZERO {
-            return CoreProximity::Overlapping { simplex, iterations };
+            return CoreProximity::Overlapping {
+                simplex,
+                iterations,
+            };
         }
         if let Some((s, pv, pvv)) = previous {
             if vv >= pvv {
@@ -80,14 +95,23 @@ where
         iterations += 1;
         let length = vv.sqrt();
         lower_bound = lower_bound.max(v.dot(w.w) / length);
-        if before.contains_id(w.id) || simplex.contains_id(w.id) || length - lower_bound <= tolerance {
+        if before.contains_id(w.id)
+            || simplex.contains_id(w.id)
+            || length - lower_bound <= tolerance
+        {
             return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
         simplex.push(w);
     }
 }
 
-fn separated<R: Real>(simplex: Simplex<R>, v: V2<R>, lower_bound: R, iterations: u32, status: Status) -> CoreProximity<R> {
+fn separated<R: Real>(
+    simplex: Simplex<R>,
+    v: V2<R>,
+    lower_bound: R,
+    iterations: u32,
+    status: Status,
+) -> CoreProximity<R> {
     CoreProximity::Separated(CoreSeparation {
         simplex,
         v,
@@ -100,7 +124,12 @@ fn separated<R: Real>(simplex: Simplex<R>, v: V2<R>, lower_bound: R, iterations:
 /// The intersection test: GJK that stops as soon as either verdict is
 /// certain, and never computes closest points. `margin` widens the shapes
 /// (the detect epsilon times the size).
-pub(crate) fn intersect<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, margin: R, epsilon: R) -> (bool, u32, Status)
+pub(crate) fn intersect<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    max_iterations: u32,
+    margin: R,
+    epsilon: R,
+) -> (bool, u32, Status)
 where
     R: Real,
     A: SupportMap<R> + ?Sized,

@@ -66,5 +66,11 @@ pub use minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
 pub use ray::{LocalRayCast, Ray};
 pub use real::Real;
 pub use result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
-pub use shape::{Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle, NO_FEATURE};
+pub use shape::{
+    Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap,
+    Triangle, NO_FEATURE,
+};
 pub use transform::Transform;
+
+#[cfg(feature = "std")]
+pub use batch::EpaVec;

@@ -69,7 +69,11 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let (cos, sin, rotated) = if ta.cos == tb.cos && ta.sin == tb.sin {
             (R::ONE, R::ZERO, false)
         } else {
-            (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos, true)
+            (
+                ta.cos * tb.cos + ta.sin * tb.sin,
+                ta.cos * tb.sin - ta.sin * tb.cos,
+                true,
+            )
         };
         let mut pair = Self {
             a,
@@ -91,14 +95,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let references = pair.rotate(reference_b) - reference_a;
         let translations = ta.inverse_rotate(tb.translation - ta.translation);
         pair.offset = translations + references;
-        pair.centers = pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
+        pair.centers =
+            pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
         pair
     }
 
     #[inline(always)]
     fn rotate(&self, v: V2<R>) -> V2<R> {
         if self.rotated {
-            V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
+            V2::new(
+                self.cos * v.x - self.sin * v.y,
+                self.sin * v.x + self.cos * v.y,
+            )
         } else {
             v
         }
@@ -106,7 +114,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[inline(always)]
     fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
         if self.rotated {
-            V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
+            V2::new(
+                self.cos * v.x + self.sin * v.y,
+                -self.sin * v.x + self.cos * v.y,
+            )
         } else {
             v
         }
@@ -137,7 +148,9 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     }
 }
 
-impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R> for Pair<'_, R, A, B> {
+impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R>
+    for Pair<'_, R, A, B>
+{
     fn support(&self, direction: R::Vector) -> SupportPoint<R> {
         let v = Pair::support(self, V2::from_glam(direction));
         SupportPoint {

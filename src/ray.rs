@@ -15,7 +15,6 @@ pub type LocalRayCast<R> = RayCast<R>;
 
 /// A half-line: an origin and a unit direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Ray<R: Real> {
     pub(crate) origin: V2<R>,
     pub(crate) direction: V2<R>,
@@ -36,7 +35,9 @@ impl<R: Real> Ray<R> {
         if m == R::ZERO {
             return Err(Error::ZeroLength);
         }
-        let direction = (d * (R::ONE / m)).try_normalize().ok_or(Error::ZeroLength)?;
+        let direction = (d * (R::ONE / m))
+            .try_normalize()
+            .ok_or(Error::ZeroLength)?;
         Ok(Self { origin, direction })
     }
     pub fn origin(&self) -> R::Vector {
@@ -58,7 +59,12 @@ fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
 /// the hit is the last entry, its normal the entered face's.
-pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+pub(crate) fn cast_ray_polygon<R: Real>(
+    vertices: &[V2<R>],
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+) -> RayCast<R> {
     let (mut lower, mut upper) = (R::ZERO, max);
     let mut entered: Option<V2<R>> = None;
     let n = vertices.len();
@@ -96,7 +102,13 @@ pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, 
 /// Ray against a disk. The root is taken in the form without cancellation,
 /// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
 /// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
-pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+pub(crate) fn cast_ray_disk<R: Real>(
+    center: V2<R>,
+    r: R,
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+) -> RayCast<R> {
     let m = o - center;
     let mm = m.length();
     if mm <= r {
@@ -120,7 +132,14 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
 /// Ray against the segment `a`-`a + delta` swept by `r` (> 0). The first hit
 /// on the union of the side band and the two end disks is the first hit of
 /// any of them.
-pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+pub(crate) fn cast_ray_capsule<R: Real>(
+    a: V2<R>,
+    delta: V2<R>,
+    r: R,
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+) -> RayCast<R> {
     if r <= R::ZERO {
         return cast_ray_segment(a, delta, o, d, max);
     }
@@ -172,7 +191,10 @@ fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R)
     // An origin on the segment (to rounding) is on the shape.
     let along = -rel.dot(delta);
     let scale = rel.length() + delta.length();
-    if along >= R::ZERO && along <= delta.length_squared() && delta.cross(rel).abs() <= slack * scale * delta.length() {
+    if along >= R::ZERO
+        && along <= delta.length_squared()
+        && delta.cross(rel).abs() <= slack * scale * delta.length()
+    {
         return RayCast::closed_form(RayOutcome::Inside);
     }
     let denominator = d.cross(delta);
@@ -193,7 +215,11 @@ fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R)
     for end in [rel, rel + delta] {
         let t = end.dot(d);
         let off = d.cross(end).abs();
-        if t >= R::ZERO && t <= max && off <= slack * (end.length() + delta.length()) && best.is_none_or(|(bt, _)| t < bt) {
+        if t >= R::ZERO
+            && t <= max
+            && off <= slack * (end.length() + delta.length())
+            && best.is_none_or(|(bt, _)| t < bt)
+        {
             if t == R::ZERO {
                 return RayCast::closed_form(RayOutcome::Inside);
             }

@@ -72,7 +72,11 @@ impl<R: Real> Simplex<R> {
         let area = (wb - wa).cross(wc - wa);
         // The origin is on the inner side of edge i->j when cross(wi, wj)
         // has the sign of the area (zero counts as inside: touching).
-        let edges = [(a, b, wa.cross(wb)), (b, c, wb.cross(wc)), (c, a, wc.cross(wa))];
+        let edges = [
+            (a, b, wa.cross(wb)),
+            (b, c, wb.cross(wc)),
+            (c, a, wc.cross(wa)),
+        ];
         let outside = |side: R| {
             if area > R::ZERO {
                 side < R::ZERO

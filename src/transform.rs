@@ -93,18 +93,24 @@ impl<R: Real> Transform<R> {
     }
     /// World point to local.
     pub fn inverse_transform_point(&self, p: R::Vector) -> R::Vector {
-        self.inverse_rotate(V2::from_glam(p) - self.translation).to_glam()
+        self.inverse_rotate(V2::from_glam(p) - self.translation)
+            .to_glam()
     }
 
     #[inline(always)]
     pub(crate) fn rotate(&self, v: V2<R>) -> V2<R> {
-        V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
+        V2::new(
+            self.cos * v.x - self.sin * v.y,
+            self.sin * v.x + self.cos * v.y,
+        )
     }
     #[inline(always)]
     pub(crate) fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
-        V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
+        V2::new(
+            self.cos * v.x + self.sin * v.y,
+            -self.sin * v.x + self.cos * v.y,
+        )
     }
-
 }
 
 /// A point must be finite and within [`Real::MAX_COORDINATE`].

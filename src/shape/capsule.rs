@@ -34,9 +34,15 @@ impl<R: Real> Capsule<R> {
             half_core = radius * R::EPSILON;
         }
         let (a, b) = if along_x {
-            (R::vector(-half_core, R::ZERO), R::vector(half_core, R::ZERO))
+            (
+                R::vector(-half_core, R::ZERO),
+                R::vector(half_core, R::ZERO),
+            )
         } else {
-            (R::vector(R::ZERO, -half_core), R::vector(R::ZERO, half_core))
+            (
+                R::vector(R::ZERO, -half_core),
+                R::vector(R::ZERO, half_core),
+            )
         };
         Self::new(a, b, radius)
     }

@@ -53,6 +53,12 @@ impl<R: Real> SupportMap<R> for Circle<R> {
         self.center.to_glam()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_disk(V2::zero(), self.radius, V2::from_glam(o), V2::from_glam(d), max))
+        Some(cast_ray_disk(
+            V2::zero(),
+            self.radius,
+            V2::from_glam(o),
+            V2::from_glam(d),
+            max,
+        ))
     }
 }

@@ -14,7 +14,10 @@ impl<R: Real> Ellipse<R> {
     /// An ellipse `width` by `height` (full extents, both > 0), as dyn4j's.
     pub fn new(width: R, height: R) -> Result<Self, Error> {
         Ok(Self {
-            half: V2::new(check_length(width)? * R::HALF, check_length(height)? * R::HALF),
+            half: V2::new(
+                check_length(width)? * R::HALF,
+                check_length(height)? * R::HALF,
+            ),
         })
     }
     pub fn half_width(&self) -> R {

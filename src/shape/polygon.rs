@@ -91,13 +91,14 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     }
     /// Vertex `i` (counter-clockwise order) in local coordinates.
     pub fn vertex(&self, i: usize) -> Option<R::Vector> {
-        self.vertices.get(i).map(|&v| (v + self.reference).to_glam())
+        self.vertices
+            .get(i)
+            .map(|&v| (v + self.reference).to_glam())
     }
     /// The area centroid in local coordinates.
     pub fn centroid(&self) -> R::Vector {
         (self.center + self.reference).to_glam()
     }
-
 }
 
 /// The point vertices are stored relative to. Far from the origin (or
@@ -107,7 +108,10 @@ impl<R: Real, const N: usize> Polygon<R, N> {
 /// are exact already, and a shift would round them.
 pub(crate) fn choose_reference<R: Real>(points: &[V2<R>]) -> V2<R> {
     let first = points[0];
-    let exact = points.iter().all(|&p| crate::real::is_exact_difference(p.x, first.x) && crate::real::is_exact_difference(p.y, first.y));
+    let exact = points.iter().all(|&p| {
+        crate::real::is_exact_difference(p.x, first.x)
+            && crate::real::is_exact_difference(p.y, first.y)
+    });
     let mut extent = R::ZERO;
     for &p in points {
         extent = extent.max((p - first).max_abs());
@@ -200,6 +204,11 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
         self.reference.to_glam()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_polygon(&self.vertices, V2::from_glam(o), V2::from_glam(d), max))
+        Some(cast_ray_polygon(
+            &self.vertices,
+            V2::from_glam(o),
+            V2::from_glam(d),
+            max,
+        ))
     }
 }

@@ -24,6 +24,10 @@ impl<R: Real, S: SupportMap<R>> Rounded<R, S> {
     pub fn inner(&self) -> &S {
         &self.inner
     }
+    /// The radius added to the inner shape's own.
+    pub fn extra_radius(&self) -> R {
+        self.radius
+    }
 }
 
 impl<R: Real, S: SupportMap<R>> SupportMap<R> for Rounded<R, S> {

@@ -1,0 +1,277 @@
+//! `defmt::Format` for every public data type. glam's vectors have no
+//! `Format`, and `Debug2Format` would cost kilobytes of flash, so vectors
+//! are written as `(x, y)` by hand.
+
+use defmt::{write, Format, Formatter};
+
+use crate::real::Real;
+use crate::shape::{
+    Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap,
+    Triangle,
+};
+use crate::{
+    Detection, EpaConfig, GjkConfig, Penetration, PenetrationEstimate, Ray, RayCast, RayHit,
+    RayOutcome, Separation, SupportPoint, Transform,
+};
+
+/// A glam vector as `(x, y)`.
+struct Xy<R: Real>(R::Vector);
+
+impl<R: Real + Format> Format for Xy<R> {
+    fn format(&self, f: Formatter<'_>) {
+        let (x, y) = R::components(self.0);
+        write!(f, "({}, {})", x, y)
+    }
+}
+
+fn xy<R: Real>(v: R::Vector) -> Xy<R> {
+    Xy(v)
+}
+
+impl Format for Detection {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Detection {{ intersecting: {}, iterations: {}, status: {} }}",
+            self.intersecting, self.iterations, self.status
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Separation<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Separation {{ distance: {}, normal: {}, point_a: {}, point_b: {}, error_bound: {}, iterations: {}, status: {} }}",
+            self.distance,
+            xy::<R>(self.normal),
+            xy::<R>(self.point_a),
+            xy::<R>(self.point_b),
+            self.error_bound,
+            self.iterations,
+            self.status
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Penetration<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Penetration {{ normal: {}, depth: {}, error_bound: {}, iterations: {}, status: {} }}",
+            xy::<R>(self.normal),
+            self.depth,
+            self.error_bound,
+            self.iterations,
+            self.status
+        )
+    }
+}
+
+impl<R: Real + Format> Format for PenetrationEstimate<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "PenetrationEstimate {{ normal: {}, depth: {}, error_bound: {}, iterations: {}, status: {} }}",
+            xy::<R>(self.normal),
+            self.depth,
+            self.error_bound,
+            self.iterations,
+            self.status
+        )
+    }
+}
+
+impl<R: Real + Format> Format for RayHit<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "RayHit {{ distance: {}, point: {}, normal: {} }}",
+            self.distance,
+            xy::<R>(self.point),
+            xy::<R>(self.normal)
+        )
+    }
+}
+
+impl<R: Real + Format> Format for RayOutcome<R> {
+    fn format(&self, f: Formatter<'_>) {
+        match self {
+            RayOutcome::Hit(h) => write!(f, "Hit({})", h),
+            RayOutcome::Miss => write!(f, "Miss"),
+            RayOutcome::Inside => write!(f, "Inside"),
+        }
+    }
+}
+
+impl<R: Real + Format> Format for RayCast<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "RayCast {{ outcome: {}, iterations: {}, status: {} }}",
+            self.outcome, self.iterations, self.status
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Ray<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Ray {{ origin: {}, direction: {} }}",
+            xy::<R>(self.origin()),
+            xy::<R>(self.direction())
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Transform<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Transform {{ translation: {}, cos: {}, sin: {} }}",
+            xy::<R>(self.translation()),
+            self.cos(),
+            self.sin()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for SupportPoint<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "SupportPoint {{ point: {}, id: {} }}",
+            xy::<R>(self.point),
+            self.id
+        )
+    }
+}
+
+impl<R: Real + Format> Format for GjkConfig<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "GjkConfig {{ iterations: {}/{}/{}, epsilons: {}/{}/{} }}",
+            self.max_detect_iterations(),
+            self.max_distance_iterations(),
+            self.max_raycast_iterations(),
+            self.detect_epsilon(),
+            self.distance_epsilon(),
+            self.raycast_epsilon()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for EpaConfig<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "EpaConfig {{ max_iterations: {}, epsilon: {} }}",
+            self.max_iterations(),
+            self.epsilon()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Circle<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Circle {{ center: {}, radius: {} }}",
+            xy::<R>(self.center_point()),
+            self.circle_radius()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Segment<R> {
+    fn format(&self, f: Formatter<'_>) {
+        let (a, b) = self.points();
+        write!(f, "Segment {{ {} - {} }}", xy::<R>(a), xy::<R>(b))
+    }
+}
+
+impl<R: Real + Format> Format for Capsule<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Capsule {{ {}, radius: {} }}",
+            self.segment(),
+            self.capsule_radius()
+        )
+    }
+}
+
+impl<R: Real + Format, const N: usize> Format for Polygon<R, N> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "Polygon {{ {} vertices:", self.len());
+        for i in 0..self.len() {
+            if let Some(v) = self.vertex(i) {
+                write!(f, " {}", xy::<R>(v));
+            }
+        }
+        write!(f, " }}")
+    }
+}
+
+impl<R: Real + Format> Format for Triangle<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "Triangle {{ {} }}", self.polygon())
+    }
+}
+
+impl<R: Real + Format> Format for Rectangle<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Rectangle {{ width: {}, height: {} }}",
+            self.width(),
+            self.height()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Ellipse<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Ellipse {{ half_width: {}, half_height: {} }}",
+            self.half_width(),
+            self.half_height()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for HalfEllipse<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "HalfEllipse {{ half_width: {}, height: {} }}",
+            self.half_width(),
+            self.height()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Slice<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Slice {{ radius: {}, theta: {} }}",
+            self.slice_radius(),
+            self.theta()
+        )
+    }
+}
+
+impl<R: Real + Format, S: SupportMap<R> + Format> Format for Rounded<R, S> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Rounded {{ {}, radius: {} }}",
+            self.inner(),
+            self.extra_radius()
+        )
+    }
+}
