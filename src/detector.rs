@@ -11,7 +11,7 @@ use crate::gjk::{core_distance, intersect, CoreProximity, CoreSeparation};
 use crate::minkowski::{Pair, SupportPoint};
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
-use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
 
@@ -134,7 +134,15 @@ impl<R: Real, P> Gjk<R, P> {
                 })
             }
             CoreProximity::Separated(core) => {
-                let (distance, normal) = core.simplex.distance_and_normal(core.v)?;
+                // A closest point too small to give a direction is touching.
+                let fallback = pair
+                    .centers
+                    .try_normalize()
+                    .unwrap_or(V2::new(R::ONE, R::ZERO));
+                let (distance, normal) = core
+                    .simplex
+                    .distance_and_normal(core.v)
+                    .unwrap_or((R::ZERO, fallback));
                 let error_bound = (distance - core.lower_bound).max(R::ZERO);
                 let certain = core.status.is_converged() || core.lower_bound > pair.radius;
                 if distance > pair.radius && certain {
@@ -208,9 +216,8 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let (core_distance, normal) = core.simplex.distance_and_normal(core.v)?;
-    if core_distance <= pair.radius
-        && (core.status.is_converged() || core_distance - core.lower_bound <= R::ZERO)
-    {
+    // `core_distance` is an upper bound: within the radii, certainly touching.
+    if core_distance <= pair.radius {
         return None;
     }
     let (a, b) = core.simplex.witness_points();
@@ -222,10 +229,6 @@ where
         point_b: pair.to_world_point(b),
         error_bound: (core_distance - core.lower_bound).max(R::ZERO),
         iterations: core.iterations,
-        status: if core.status == Status::Converged {
-            Status::Converged
-        } else {
-            core.status
-        },
+        status: core.status,
     })
 }

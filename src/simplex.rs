@@ -160,9 +160,19 @@ fn solve_segment<R: Real>(p: MinkowskiVertex<R>, q: MinkowskiVertex<R>) -> (Simp
     if toward_p <= R::ZERO {
         return (Simplex::new(q), q.w);
     }
-    let inv = R::ONE / (toward_q + toward_p);
     let n = e.perp();
-    let v = n * (n.dot(p.w) / n.length_squared());
+    let nn = n.length_squared();
+    if !(nn > R::ZERO) {
+        // An edge so short its squared length underflows: keep the nearer end.
+        let nearer = if p.w.length_squared() <= q.w.length_squared() {
+            p
+        } else {
+            q
+        };
+        return (Simplex::new(nearer), nearer.w);
+    }
+    let inv = R::ONE / (toward_q + toward_p);
+    let v = n * (n.dot(p.w) / nn);
     let s = Simplex {
         verts: [p, q, q],
         weights: [toward_p * inv, toward_q * inv, R::ZERO],

@@ -43,24 +43,90 @@ macro_rules! known_answer_suite {
                 let pmax = xs.iter().cloned().fold(R::MIN, R::max);
                 let pmin = xs.iter().cloned().fold(R::MAX, R::min);
                 vec![
-                    Case { name: "circle", shape: Box::new(Circle::new(0.75).unwrap()), turn: one, right: 0.75, left: 0.75, curved_right: false, curved_left: false },
-                    Case { name: "polygon", shape: Box::new(poly), turn: one, right: pmax, left: -pmin, curved_right: false, curved_left: false },
-                    Case { name: "rectangle", shape: Box::new(Rectangle::new(1.5, 0.5).unwrap()), turn: one, right: 0.75, left: 0.75, curved_right: false, curved_left: false },
+                    Case {
+                        name: "circle",
+                        shape: Box::new(Circle::new(0.75).unwrap()),
+                        turn: one,
+                        right: 0.75,
+                        left: 0.75,
+                        curved_right: false,
+                        curved_left: false,
+                    },
+                    Case {
+                        name: "polygon",
+                        shape: Box::new(poly),
+                        turn: one,
+                        right: pmax,
+                        left: -pmin,
+                        curved_right: false,
+                        curved_left: false,
+                    },
+                    Case {
+                        name: "rectangle",
+                        shape: Box::new(Rectangle::new(1.5, 0.5).unwrap()),
+                        turn: one,
+                        right: 0.75,
+                        left: 0.75,
+                        curved_right: false,
+                        curved_left: false,
+                    },
                     Case {
                         name: "triangle",
-                        shape: Box::new(Triangle::new(v(1.0, 0.0), v(-0.5, 0.8), v(-0.5, -0.8)).unwrap()),
-                        turn: one, right: 1.0, left: 0.5, curved_right: false, curved_left: false,
+                        shape: Box::new(
+                            Triangle::new(v(1.0, 0.0), v(-0.5, 0.8), v(-0.5, -0.8)).unwrap(),
+                        ),
+                        turn: one,
+                        right: 1.0,
+                        left: 0.5,
+                        curved_right: false,
+                        curved_left: false,
                     },
-                    Case { name: "segment", shape: Box::new(Segment::new(v(-0.625, 0.0), v(0.625, 0.0)).unwrap()), turn: one, right: 0.625, left: 0.625, curved_right: false, curved_left: false },
-                    Case { name: "capsule", shape: Box::new(Capsule::from_size(2.0, 0.5).unwrap()), turn: one, right: 1.0, left: 1.0, curved_right: false, curved_left: false },
-                    Case { name: "ellipse", shape: Box::new(Ellipse::new(2.0, 1.0).unwrap()), turn: one, right: 1.0, left: 1.0, curved_right: true, curved_left: true },
+                    Case {
+                        name: "segment",
+                        shape: Box::new(Segment::new(v(-0.625, 0.0), v(0.625, 0.0)).unwrap()),
+                        turn: one,
+                        right: 0.625,
+                        left: 0.625,
+                        curved_right: false,
+                        curved_left: false,
+                    },
+                    Case {
+                        name: "capsule",
+                        shape: Box::new(Capsule::from_size(2.0, 0.5).unwrap()),
+                        turn: one,
+                        right: 1.0,
+                        left: 1.0,
+                        curved_right: false,
+                        curved_left: false,
+                    },
+                    Case {
+                        name: "ellipse",
+                        shape: Box::new(Ellipse::new(2.0, 1.0).unwrap()),
+                        turn: one,
+                        right: 1.0,
+                        left: 1.0,
+                        curved_right: true,
+                        curved_left: true,
+                    },
                     Case {
                         name: "half-ellipse",
                         // Turned -90 degrees: the flat side faces -x, the dome +x.
                         shape: Box::new(HalfEllipse::new(1.5, 0.75).unwrap()),
-                        turn: (0.0, -1.0), right: 0.75, left: 0.0, curved_right: true, curved_left: false,
+                        turn: (0.0, -1.0),
+                        right: 0.75,
+                        left: 0.0,
+                        curved_right: true,
+                        curved_left: false,
                     },
-                    Case { name: "slice", shape: Box::new(Slice::new(1.25, 1.0).unwrap()), turn: one, right: 1.25, left: 0.0, curved_right: true, curved_left: false },
+                    Case {
+                        name: "slice",
+                        shape: Box::new(Slice::new(1.25, 1.0).unwrap()),
+                        turn: one,
+                        right: 1.25,
+                        left: 0.0,
+                        curved_right: true,
+                        curved_left: false,
+                    },
                 ]
             }
 
@@ -105,16 +171,37 @@ macro_rules! known_answer_suite {
                             let scale = at + a.left + b.right;
                             let tol = tolerance(a.curved_right || b.curved_left, scale);
                             let what = format!("{} vs {} at angle {angle}", a.name, b.name);
-                            let sep = gjk.distance(&*a.shape, &ta, &*b.shape, &tb).unwrap_or_else(|| panic!("{what}: reported overlapping"));
+                            let sep = gjk
+                                .distance(&*a.shape, &ta, &*b.shape, &tb)
+                                .unwrap_or_else(|| panic!("{what}: reported overlapping"));
                             assert!(sep.status.is_converged(), "{what}: {:?}", sep.status);
-                            assert!((sep.distance - gap).abs() <= tol, "{what}: distance {} vs {gap}", sep.distance);
+                            assert!(
+                                (sep.distance - gap).abs() <= tol,
+                                "{what}: distance {} vs {gap}",
+                                sep.distance
+                            );
                             let expected_normal = v(angle.cos(), angle.sin());
-                            assert!((sep.normal - expected_normal).length() <= 1e-3, "{what}: normal {:?}", sep.normal);
+                            assert!(
+                                (sep.normal - expected_normal).length() <= 1e-3,
+                                "{what}: normal {:?}",
+                                sep.normal
+                            );
                             // Closest points: on the rotated axis, gap apart.
-                            assert!(((sep.point_b - sep.point_a).length() - gap).abs() <= tol * 4.0, "{what}: points {:?} {:?}", sep.point_a, sep.point_b);
+                            assert!(
+                                ((sep.point_b - sep.point_a).length() - gap).abs() <= tol * 4.0,
+                                "{what}: points {:?} {:?}",
+                                sep.point_a,
+                                sep.point_b
+                            );
                             let det = gjk.intersects(&*a.shape, &ta, &*b.shape, &tb);
-                            assert!(!det.intersecting && det.status.is_converged(), "{what}: {det:?}");
-                            assert!(gjk.penetration(&*a.shape, &ta, &*b.shape, &tb).is_none(), "{what}: penetration reported");
+                            assert!(
+                                !det.intersecting && det.status.is_converged(),
+                                "{what}: {det:?}"
+                            );
+                            assert!(
+                                gjk.penetration(&*a.shape, &ta, &*b.shape, &tb).is_none(),
+                                "{what}: penetration reported"
+                            );
                             checked += 1;
                         }
                     }
@@ -135,16 +222,40 @@ macro_rules! known_answer_suite {
                         let tb = place(angle, (1.0, 0.0), at);
                         let tol = tolerance(a.curved_right, 40.0);
                         let what = format!("{} into block at angle {angle}", a.name);
-                        let p = gjk.penetration(&*a.shape, &ta, &block, &tb).unwrap_or_else(|| panic!("{what}: apart"));
+                        let p = gjk
+                            .penetration(&*a.shape, &ta, &block, &tb)
+                            .unwrap_or_else(|| panic!("{what}: apart"));
                         assert!(p.status.is_converged(), "{what}: {:?}", p.status);
-                        assert!((p.depth - delta).abs() <= tol, "{what}: depth {} vs {delta}", p.depth);
-                        assert!((p.normal - v(angle.cos(), angle.sin())).length() <= 1e-3, "{what}: normal {:?}", p.normal);
-                        assert!(gjk.intersects(&*a.shape, &ta, &block, &tb).intersecting, "{what}");
-                        assert!(gjk.distance(&*a.shape, &ta, &block, &tb).is_none(), "{what}");
+                        assert!(
+                            (p.depth - delta).abs() <= tol,
+                            "{what}: depth {} vs {delta}",
+                            p.depth
+                        );
+                        assert!(
+                            (p.normal - v(angle.cos(), angle.sin())).length() <= 1e-3,
+                            "{what}: normal {:?}",
+                            p.normal
+                        );
+                        assert!(
+                            gjk.intersects(&*a.shape, &ta, &block, &tb).intersecting,
+                            "{what}"
+                        );
+                        assert!(
+                            gjk.distance(&*a.shape, &ta, &block, &tb).is_none(),
+                            "{what}"
+                        );
                         // And the other way round: the normal flips.
                         let q = gjk.penetration(&block, &tb, &*a.shape, &ta).unwrap();
-                        assert!((q.depth - delta).abs() <= tol, "{what} swapped: depth {}", q.depth);
-                        assert!((q.normal + v(angle.cos(), angle.sin())).length() <= 1e-3, "{what} swapped: normal {:?}", q.normal);
+                        assert!(
+                            (q.depth - delta).abs() <= tol,
+                            "{what} swapped: depth {}",
+                            q.depth
+                        );
+                        assert!(
+                            (q.normal + v(angle.cos(), angle.sin())).length() <= 1e-3,
+                            "{what} swapped: normal {:?}",
+                            q.normal
+                        );
                     }
                 }
             }
@@ -161,26 +272,42 @@ macro_rules! known_answer_suite {
                             let tb = place(angle, b.turn, at);
                             let (c, s) = (angle.cos(), angle.sin());
                             let ray = Ray::new(v(0.0, 0.0), v(c, s)).unwrap();
-                            let what = format!("ray at {} (angle {angle}, closed form {closed_form})", b.name);
+                            let what = format!(
+                                "ray at {} (angle {angle}, closed form {closed_form})",
+                                b.name
+                            );
                             let cast = gjk.raycast(&ray, 0.0, &*b.shape, &tb);
                             let hit = cast.hit().unwrap_or_else(|| panic!("{what}: {cast:?}"));
                             let expected = at - b.left;
                             let curved = b.curved_left || !closed_form;
                             let tol = tolerance(curved, at + b.right) * 4.0;
-                            assert!((hit.distance - expected).abs() <= tol, "{what}: t {} vs {expected}", hit.distance);
+                            assert!(
+                                (hit.distance - expected).abs() <= tol,
+                                "{what}: t {} vs {expected}",
+                                hit.distance
+                            );
                             // Faces and smooth points have a definite normal; the
                             // slice's apex and the triangle's... left side is a face.
                             if b.name != "slice" && b.name != "polygon" {
-                                assert!((hit.normal + v(c, s)).length() <= 2e-3, "{what}: normal {:?}", hit.normal);
+                                assert!(
+                                    (hit.normal + v(c, s)).length() <= 2e-3,
+                                    "{what}: normal {:?}",
+                                    hit.normal
+                                );
                             }
                             // Too short: a miss. Starting inside: inside.
                             let short = gjk.raycast(&ray, expected * 0.5, &*b.shape, &tb);
                             assert_eq!(short.outcome, RayOutcome::Miss, "{what}: short ray");
                             // From the shape's center: inside.
-                            let center = tb.transform_point(b.shape.reference_point() + b.shape.center());
+                            let center =
+                                tb.transform_point(b.shape.reference_point() + b.shape.center());
                             let from_center = Ray::new(center, v(c, s)).unwrap();
                             let inside = gjk.raycast(&from_center, 0.0, &*b.shape, &tb);
-                            assert_eq!(inside.outcome, RayOutcome::Inside, "{what}: from the center");
+                            assert_eq!(
+                                inside.outcome,
+                                RayOutcome::Inside,
+                                "{what}: from the center"
+                            );
                         }
                     }
                 }
