@@ -74,3 +74,8 @@ pub use transform::Transform;
 
 #[cfg(feature = "std")]
 pub use batch::EpaVec;
+
+/// The README's examples, compiled and run as doctests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
