@@ -16,20 +16,12 @@ use crate::Gjk;
 impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
     /// The separation of `a` from each of `others`, in order: `None` where
     /// they overlap.
-    pub fn distances<A, B>(
-        &self,
-        a: &A,
-        ta: &Transform<R>,
-        others: &[(B, Transform<R>)],
-    ) -> Vec<Option<Separation<R>>>
+    pub fn distances<A, B>(&self, a: &A, ta: &Transform<R>, others: &[(B, Transform<R>)]) -> Vec<Option<Separation<R>>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R>,
     {
-        others
-            .iter()
-            .map(|(b, tb)| self.distance(a, ta, b, tb))
-            .collect()
+        others.iter().map(|(b, tb)| self.distance(a, ta, b, tb)).collect()
     }
 
     /// The penetration of `a` into each of `others`, in order: `None` where
@@ -44,20 +36,12 @@ impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R>,
     {
-        others
-            .iter()
-            .map(|(b, tb)| self.penetration(a, ta, b, tb))
-            .collect()
+        others.iter().map(|(b, tb)| self.penetration(a, ta, b, tb)).collect()
     }
 
     /// Every shape the ray hits within `max_length`, nearest first, with
     /// its index in `shapes`. Rays starting inside a shape do not list it.
-    pub fn raycast_all<S>(
-        &self,
-        ray: &Ray<R>,
-        max_length: R,
-        shapes: &[(S, Transform<R>)],
-    ) -> Vec<(usize, RayHit<R>)>
+    pub fn raycast_all<S>(&self, ray: &Ray<R>, max_length: R, shapes: &[(S, Transform<R>)]) -> Vec<(usize, RayHit<R>)>
     where
         S: SupportMap<R>,
     {
@@ -67,11 +51,7 @@ impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
             .filter_map(|(i, (s, t))| self.raycast(ray, max_length, s, t).hit().map(|h| (i, *h)))
             .collect();
         // Distances are finite, so the order is total.
-        hits.sort_by(|x, y| {
-            x.1.distance
-                .partial_cmp(&y.1.distance)
-                .unwrap_or(core::cmp::Ordering::Equal)
-        });
+        hits.sort_by(|x, y| x.1.distance.partial_cmp(&y.1.distance).unwrap_or(core::cmp::Ordering::Equal));
         hits
     }
 }
@@ -84,11 +64,7 @@ pub struct EpaVec<R: Real> {
 }
 
 impl<R: Real> PenetrationSolver<R> for EpaVec<R> {
-    fn solve<M: MinkowskiDifference<R>>(
-        &self,
-        difference: &M,
-        simplex: &[SupportPoint<R>],
-    ) -> PenetrationEstimate<R> {
+    fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
         let mut polytope = Vec::with_capacity(16);
         expand(&mut polytope, &self.config, difference, simplex)
     }

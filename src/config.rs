@@ -130,10 +130,7 @@ impl<R: Real> Default for EpaConfig<R> {
     /// 100 iterations (dyn4j's default), epsilon 1e-6 (f32) or 1e-12 (f64),
     /// relative to the pair's size.
     fn default() -> Self {
-        Self {
-            max_iterations: 100,
-            epsilon: default_epsilon(),
-        }
+        Self { max_iterations: 100, epsilon: default_epsilon() }
     }
 }
 

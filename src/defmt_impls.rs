@@ -6,12 +6,11 @@ use defmt::{write, Format, Formatter};
 
 use crate::real::Real;
 use crate::shape::{
-    Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap,
-    Triangle,
+    Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
 };
 use crate::{
-    Detection, EpaConfig, GjkConfig, Penetration, PenetrationEstimate, Ray, RayCast, RayHit,
-    RayOutcome, Separation, SupportPoint, Transform,
+    Detection, EpaConfig, GjkConfig, Penetration, PenetrationEstimate, Ray, RayCast, RayHit, RayOutcome, Separation,
+    SupportPoint, Transform,
 };
 
 /// A glam vector as `(x, y)`.
@@ -106,22 +105,13 @@ impl<R: Real + Format> Format for RayOutcome<R> {
 
 impl<R: Real + Format> Format for RayCast<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "RayCast {{ outcome: {}, iterations: {}, status: {} }}",
-            self.outcome, self.iterations, self.status
-        )
+        write!(f, "RayCast {{ outcome: {}, iterations: {}, status: {} }}", self.outcome, self.iterations, self.status)
     }
 }
 
 impl<R: Real + Format> Format for Ray<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Ray {{ origin: {}, direction: {} }}",
-            xy::<R>(self.origin()),
-            xy::<R>(self.direction())
-        )
+        write!(f, "Ray {{ origin: {}, direction: {} }}", xy::<R>(self.origin()), xy::<R>(self.direction()))
     }
 }
 
@@ -139,12 +129,7 @@ impl<R: Real + Format> Format for Transform<R> {
 
 impl<R: Real + Format> Format for SupportPoint<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "SupportPoint {{ point: {}, id: {} }}",
-            xy::<R>(self.point),
-            self.id
-        )
+        write!(f, "SupportPoint {{ point: {}, id: {} }}", xy::<R>(self.point), self.id)
     }
 }
 
@@ -165,23 +150,13 @@ impl<R: Real + Format> Format for GjkConfig<R> {
 
 impl<R: Real + Format> Format for EpaConfig<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "EpaConfig {{ max_iterations: {}, epsilon: {} }}",
-            self.max_iterations(),
-            self.epsilon()
-        )
+        write!(f, "EpaConfig {{ max_iterations: {}, epsilon: {} }}", self.max_iterations(), self.epsilon())
     }
 }
 
 impl<R: Real + Format> Format for Circle<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Circle {{ center: {}, radius: {} }}",
-            xy::<R>(self.center_point()),
-            self.circle_radius()
-        )
+        write!(f, "Circle {{ center: {}, radius: {} }}", xy::<R>(self.center_point()), self.circle_radius())
     }
 }
 
@@ -194,12 +169,7 @@ impl<R: Real + Format> Format for Segment<R> {
 
 impl<R: Real + Format> Format for Capsule<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Capsule {{ {}, radius: {} }}",
-            self.segment(),
-            self.capsule_radius()
-        )
+        write!(f, "Capsule {{ {}, radius: {} }}", self.segment(), self.capsule_radius())
     }
 }
 
@@ -223,55 +193,30 @@ impl<R: Real + Format> Format for Triangle<R> {
 
 impl<R: Real + Format> Format for Rectangle<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Rectangle {{ width: {}, height: {} }}",
-            self.width(),
-            self.height()
-        )
+        write!(f, "Rectangle {{ width: {}, height: {} }}", self.width(), self.height())
     }
 }
 
 impl<R: Real + Format> Format for Ellipse<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Ellipse {{ half_width: {}, half_height: {} }}",
-            self.half_width(),
-            self.half_height()
-        )
+        write!(f, "Ellipse {{ half_width: {}, half_height: {} }}", self.half_width(), self.half_height())
     }
 }
 
 impl<R: Real + Format> Format for HalfEllipse<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "HalfEllipse {{ half_width: {}, height: {} }}",
-            self.half_width(),
-            self.height()
-        )
+        write!(f, "HalfEllipse {{ half_width: {}, height: {} }}", self.half_width(), self.height())
     }
 }
 
 impl<R: Real + Format> Format for Slice<R> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Slice {{ radius: {}, theta: {} }}",
-            self.slice_radius(),
-            self.theta()
-        )
+        write!(f, "Slice {{ radius: {}, theta: {} }}", self.slice_radius(), self.theta())
     }
 }
 
 impl<R: Real + Format, S: SupportMap<R> + Format> Format for Rounded<R, S> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Rounded {{ {}, radius: {} }}",
-            self.inner(),
-            self.extra_radius()
-        )
+        write!(f, "Rounded {{ {}, radius: {} }}", self.inner(), self.extra_radius())
     }
 }

@@ -36,11 +36,7 @@ impl<R: Real> Gjk<R> {
 impl<R: Real, P> Gjk<R, P> {
     /// A detector with the given configuration and penetration solver.
     pub fn with_solver(config: GjkConfig<R>, solver: P) -> Self {
-        Self {
-            config,
-            solver,
-            closed_form_rays: true,
-        }
+        Self { config, solver, closed_form_rays: true }
     }
 
     /// Whether A and B overlap (touching counts), without computing how much.
@@ -51,39 +47,21 @@ impl<R: Real, P> Gjk<R, P> {
     {
         let pair = Pair::new(a, ta, b, tb);
         let margin = self.config.detect_epsilon() * pair.scale;
-        let (intersecting, iterations, status) = intersect(
-            &pair,
-            self.config.max_detect_iterations(),
-            margin,
-            self.config.distance_epsilon(),
-        );
-        Detection {
-            intersecting,
-            iterations,
-            status,
-        }
+        let (intersecting, iterations, status) =
+            intersect(&pair, self.config.max_detect_iterations(), margin, self.config.distance_epsilon());
+        Detection { intersecting, iterations, status }
     }
 
     /// The separation of A and B: `None` means they certainly overlap or
     /// touch. A result with `Status::IterationLimit` is a best guess whose
     /// `error_bound` may exceed its distance.
-    pub fn distance<A, B>(
-        &self,
-        a: &A,
-        ta: &Transform<R>,
-        b: &B,
-        tb: &Transform<R>,
-    ) -> Option<Separation<R>>
+    pub fn distance<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Separation<R>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance(
-            &pair,
-            self.config.max_distance_iterations(),
-            self.config.distance_epsilon(),
-        ) {
+        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreProximity::Overlapping { .. } => None,
             CoreProximity::Separated(core) => separation(&pair, &core),
         }
@@ -92,37 +70,18 @@ impl<R: Real, P> Gjk<R, P> {
     /// The penetration of A and B: `None` means they are certainly apart.
     /// Cores that overlap go to the penetration solver; rounded shapes whose
     /// cores are apart are resolved in closed form from the core distance.
-    pub fn penetration<A, B>(
-        &self,
-        a: &A,
-        ta: &Transform<R>,
-        b: &B,
-        tb: &Transform<R>,
-    ) -> Option<Penetration<R>>
+    pub fn penetration<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance(
-            &pair,
-            self.config.max_distance_iterations(),
-            self.config.distance_epsilon(),
-        ) {
-            CoreProximity::Overlapping {
-                simplex,
-                iterations,
-            } => {
-                let mut points = [SupportPoint {
-                    point: R::vector(R::ZERO, R::ZERO),
-                    id: 0,
-                }; 3];
+        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            CoreProximity::Overlapping { simplex, iterations } => {
+                let mut points = [SupportPoint { point: R::vector(R::ZERO, R::ZERO), id: 0 }; 3];
                 for (p, v) in points.iter_mut().zip(simplex.vertices()) {
-                    *p = SupportPoint {
-                        point: v.w.to_glam(),
-                        id: v.id,
-                    };
+                    *p = SupportPoint { point: v.w.to_glam(), id: v.id };
                 }
                 let estimate = self.solver.solve(&pair, &points[..simplex.len]);
                 Some(Penetration {
@@ -135,14 +94,8 @@ impl<R: Real, P> Gjk<R, P> {
             }
             CoreProximity::Separated(core) => {
                 // A closest point too small to give a direction is touching.
-                let fallback = pair
-                    .centers
-                    .try_normalize()
-                    .unwrap_or(V2::new(R::ONE, R::ZERO));
-                let (distance, normal) = core
-                    .simplex
-                    .distance_and_normal(core.v)
-                    .unwrap_or((R::ZERO, fallback));
+                let fallback = pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO));
+                let (distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
                 let error_bound = (distance - core.lower_bound).max(R::ZERO);
                 let certain = core.status.is_converged() || core.lower_bound > pair.radius;
                 if distance > pair.radius && certain {
@@ -161,31 +114,18 @@ impl<R: Real, P> Gjk<R, P> {
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
     /// up to `max_length` (zero, negative or infinite: unbounded).
-    pub fn raycast<S>(
-        &self,
-        ray: &Ray<R>,
-        max_length: R,
-        shape: &S,
-        transform: &Transform<R>,
-    ) -> RayCast<R>
+    pub fn raycast<S>(&self, ray: &Ray<R>, max_length: R, shape: &S, transform: &Transform<R>) -> RayCast<R>
     where
         S: SupportMap<R> + ?Sized,
     {
-        let max = if max_length > R::ZERO {
-            max_length
-        } else {
-            R::INFINITY
-        };
+        let max = if max_length > R::ZERO { max_length } else { R::INFINITY };
         let reference = V2::from_glam(shape.reference_point());
         // Into the shape's frame, relative to its reference point: the
         // difference first, so a ray near a far-away shape keeps its precision.
         let origin = transform.inverse_rotate(ray.origin - transform.translation) - reference;
         let direction = transform.inverse_rotate(ray.direction);
-        let local = if self.closed_form_rays {
-            shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
-        } else {
-            None
-        };
+        let local =
+            if self.closed_form_rays { shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max) } else { None };
         let local = local.unwrap_or_else(|| {
             cast_ray_gjk(
                 shape,
@@ -215,7 +155,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let (core_distance, normal) = core.simplex.distance_and_normal(core.v)?;
+    let (core_distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers)?;
     // `core_distance` is an upper bound: within the radii, certainly touching.
     if core_distance <= pair.radius {
         return None;

@@ -30,11 +30,7 @@ pub struct PenetrationEstimate<R: Real> {
 /// Minkowski difference of two overlapping cores and GJK's final simplex
 /// (1 to 3 points enclosing or touching the origin), find the depth.
 pub trait PenetrationSolver<R: Real> {
-    fn solve<M: MinkowskiDifference<R>>(
-        &self,
-        difference: &M,
-        simplex: &[SupportPoint<R>],
-    ) -> PenetrationEstimate<R>;
+    fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R>;
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
@@ -51,11 +47,7 @@ impl<R: Real, const N: usize> Epa<R, N> {
 }
 
 impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
-    fn solve<M: MinkowskiDifference<R>>(
-        &self,
-        difference: &M,
-        simplex: &[SupportPoint<R>],
-    ) -> PenetrationEstimate<R> {
+    fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
         let mut polytope = heapless::Vec::<Corner<R>, N>::new();
         expand(&mut polytope, &self.config, difference, simplex)
     }
@@ -77,6 +69,7 @@ pub(crate) trait Storage<R> {
     fn items_mut(&mut self) -> &mut [Corner<R>];
     /// Inserts at `index`; false when full.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool;
+    fn remove_at(&mut self, index: usize);
     fn clear_all(&mut self);
 }
 
@@ -89,6 +82,9 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     }
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
         self.insert(index, c).is_ok()
+    }
+    fn remove_at(&mut self, index: usize) {
+        self.remove(index);
     }
     fn clear_all(&mut self) {
         self.clear()
@@ -107,6 +103,9 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
         self.insert(index, c);
         true
     }
+    fn remove_at(&mut self, index: usize) {
+        self.remove(index);
+    }
     fn clear_all(&mut self) {
         self.clear()
     }
@@ -118,22 +117,16 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
     let n = (q - p).perp_cw();
     let len = n.length();
     if len > R::ZERO {
-        let unit = n * (R::ONE / len);
-        ((p.dot(n) / len).max(R::ZERO), unit)
+        // Componentwise division: exact unit normals for axis-aligned edges.
+        let unit = V2::new(n.x / len, n.y / len);
+        (p.dot(unit).max(R::ZERO), unit)
     } else {
-        (
-            R::ZERO,
-            p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO)),
-        )
+        (R::ZERO, p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO)))
     }
 }
 
 fn corner<R: Real>(s: &SupportPoint<R>) -> Corner<R> {
-    Corner {
-        w: V2::from_glam(s.point),
-        id: s.id,
-        edge_distance: R::ZERO,
-    }
+    Corner { w: V2::from_glam(s.point), id: s.id, edge_distance: R::ZERO }
 }
 
 pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
@@ -163,11 +156,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         [a] => {
             let a = corner(a);
             let b = support(V2::new(R::ONE, R::ZERO));
-            let b = if b.w == a.w {
-                support(V2::new(-R::ONE, R::ZERO))
-            } else {
-                b
-            };
+            let b = if b.w == a.w { support(V2::new(-R::ONE, R::ZERO)) } else { b };
             iterations += 1;
             seed_from_edge(polytope, a, b, &support, &mut iterations)
         }
@@ -191,6 +180,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     }
 
     let mut upper = R::INFINITY;
+    let mut best = V2::new(R::ONE, R::ZERO);
     loop {
         let items = polytope.items();
         let n = items.len();
@@ -205,10 +195,13 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let (p, q) = (items[i], items[j]);
         let (_, normal) = edge(p.w, q.w);
         if iterations >= config.max_iterations() {
-            return estimate(
-                normal,
+            return finish_curved(
+                polytope,
+                i,
+                &support,
                 lower,
-                upper - lower,
+                (upper, best),
+                tolerance,
                 iterations,
                 Status::IterationLimit,
             );
@@ -216,33 +209,159 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let w = support(normal);
         iterations += 1;
         let reach = w.w.dot(normal);
-        upper = upper.min(reach);
-        let repeated = w.id != NO_ID && (w.id == p.id || w.id == q.id);
-        if repeated || reach - lower <= tolerance {
-            return estimate(
-                normal,
-                lower,
-                (upper - lower).max(R::ZERO),
-                iterations,
-                Status::Converged,
-            );
+        // The upper bound and its direction are an achievable answer: moving
+        // B by `reach` against `normal` separates the cores. Reported as the
+        // result, so depth and normal always belong together (the closest
+        // chord's normal can be off where the chord is not a face).
+        if reach < upper {
+            upper = reach;
+            best = normal;
         }
-        let new = Corner {
-            w: w.w,
-            id: w.id,
-            edge_distance: edge(w.w, q.w).0,
-        };
+        let repeated = w.id != NO_ID && (w.id == p.id || w.id == q.id);
+        if repeated || upper - lower <= tolerance {
+            return estimate(best, upper, (upper - lower).max(R::ZERO), iterations, Status::Converged);
+        }
+        let new = Corner { w: w.w, id: w.id, edge_distance: edge(w.w, q.w).0 };
         if !polytope.insert_at(j.max(i + 1), new) {
-            return estimate(
-                normal,
-                lower,
-                upper - lower,
-                iterations,
-                Status::CapacityLimit,
-            );
+            // Full: make room where the polytope no longer matters, then
+            // look again (the support is recomputed, the bounds stand).
+            if !prune(polytope, i, upper) {
+                return finish_curved(
+                    polytope,
+                    i,
+                    &support,
+                    lower,
+                    (upper, best),
+                    tolerance,
+                    iterations,
+                    Status::CapacityLimit,
+                );
+            }
+            continue;
         }
         polytope.items_mut()[i].edge_distance = edge(p.w, w.w).0;
     }
+}
+
+/// EPA stopped short (polytope full or out of iterations). On a curved
+/// region its certified lower bound converges slowly: every basin of a smooth
+/// boundary needs chords shrinking towards it from both sides. The depth
+/// itself is found much faster as the minimum of the support function
+/// `h(u) = max_p p.u` near the closest edge: its derivative along the
+/// direction, `s(u) . perp(u)`, vanishes there, and a safeguarded secant finds
+/// that root between the normals of the neighbouring edges in a few support
+/// calls. The answer is an achievable translation (the boundary is reached
+/// along it) and `error_bound` stays the certified gap to EPA's lower bound.
+/// Polytope regions, or a polish that does not bracket a minimum, keep EPA's
+/// answer and its status.
+#[allow(clippy::too_many_arguments)]
+fn finish_curved<R: Real, S: Storage<R>>(
+    polytope: &S,
+    closest: usize,
+    support: &impl Fn(V2<R>) -> Corner<R>,
+    lower: R,
+    (upper, best): (R, V2<R>),
+    tolerance: R,
+    mut iterations: u32,
+    status: Status,
+) -> PenetrationEstimate<R> {
+    // Without a polish: the best achievable answer seen, or (before any
+    // support was taken) the closest chord.
+    let fallback = if upper.is_finite() {
+        estimate(best, upper, (upper - lower).max(R::ZERO), iterations, status)
+    } else {
+        estimate(V2::new(R::ONE, R::ZERO), lower, R::ZERO, iterations, status)
+    };
+    let items = polytope.items();
+    let n = items.len();
+    if n < 3 || closest >= n {
+        return fallback;
+    }
+    let (prev, p, q, next) =
+        (items[(closest + n - 1) % n], items[closest], items[(closest + 1) % n], items[(closest + 2) % n]);
+    let (_, normal) = edge(p.w, q.w);
+    if p.id != NO_ID && q.id != NO_ID {
+        return fallback;
+    }
+    // Directions u(t) = normalize((1 - t) a + t b), t in [0, 1], sweep from the
+    // previous edge's normal to the next one's (less than a half turn apart).
+    let (a, b) = (edge(prev.w, p.w).1, edge(q.w, next.w).1);
+    if a.cross(b) <= R::ZERO {
+        return fallback;
+    }
+    let direction = |t: R| (a * (R::ONE - t) + b * t).try_normalize().unwrap_or(normal);
+    let slope = |u: V2<R>| support(u).w.dot(u.perp());
+    let (mut t0, mut t1) = (R::ZERO, R::ONE);
+    let (mut g0, mut g1) = (slope(a), slope(b));
+    iterations += 2;
+    if !(g0 <= R::ZERO && g1 >= R::ZERO) {
+        return fallback;
+    }
+    // Illinois variant of regula falsi: superlinear, never leaves the bracket.
+    let mut side = 0i8;
+    let limit = iterations + 60;
+    let step_tolerance = tolerance.min(R::ONE).max(R::EPSILON);
+    while iterations < limit && t1 - t0 > step_tolerance {
+        let mut t = if g1 - g0 > R::ZERO { t0 - g0 * (t1 - t0) / (g1 - g0) } else { (t0 + t1) * R::HALF };
+        if !(t > t0 && t < t1) {
+            t = (t0 + t1) * R::HALF;
+        }
+        let g = slope(direction(t));
+        iterations += 1;
+        if g == R::ZERO {
+            t0 = t;
+            t1 = t;
+        } else if g < R::ZERO {
+            t0 = t;
+            g0 = g;
+            if side == -1 {
+                g1 *= R::HALF;
+            }
+            side = -1;
+        } else {
+            t1 = t;
+            g1 = g;
+            if side == 1 {
+                g0 *= R::HALF;
+            }
+            side = 1;
+        }
+    }
+    let u = direction((t0 + t1) * R::HALF);
+    let depth = support(u).w.dot(u);
+    iterations += 1;
+    if depth > upper {
+        return fallback;
+    }
+    estimate(u, depth, (depth - lower).max(R::ZERO), iterations, Status::Converged)
+}
+
+/// Removes one vertex whose two edges, merged into one chord, stay at least
+/// `upper` from the origin: the chord can never become the closest edge before
+/// EPA converges, and the polytope stays convex and around the origin. The
+/// closest edge (starting at `closest`) is kept. False when no vertex qualifies.
+fn prune<R: Real, S: Storage<R>>(polytope: &mut S, closest: usize, upper: R) -> bool {
+    let n = polytope.items().len();
+    let mut farthest: Option<(usize, R)> = None;
+    for k in 0..n {
+        if k == closest || k == (closest + 1) % n {
+            continue;
+        }
+        let items = polytope.items();
+        let (prev, next) = (items[(k + n - 1) % n].w, items[(k + 1) % n].w);
+        let chord = edge(prev, next).0;
+        if chord >= upper && farthest.is_none_or(|(_, d)| chord > d) {
+            farthest = Some((k, chord));
+        }
+    }
+    let Some((k, chord)) = farthest else {
+        return false;
+    };
+    polytope.remove_at(k);
+    let n = n - 1;
+    let before = (k + n - 1) % n;
+    polytope.items_mut()[before].edge_distance = chord;
+    true
 }
 
 /// A triangle or quadrilateral around the origin from an edge `a`-`b` that
@@ -273,34 +392,20 @@ fn seed_from_edge<R: Real, S: Storage<R>>(
         let area_right = (b.w - a.w).cross(items[1].w - a.w);
         let area_left = (b.w - a.w).cross(items[3].w - a.w);
         if area_left <= R::ZERO {
-            remove(polytope, 3);
+            polytope.remove_at(3);
         }
         if area_right >= R::ZERO {
-            remove(polytope, 1);
+            polytope.remove_at(1);
         }
     } else if items.len() == 3 {
         let area = (items[1].w - items[0].w).cross(items[2].w - items[0].w);
         if area == R::ZERO {
-            remove(polytope, 2);
+            polytope.remove_at(2);
         } else if area < R::ZERO {
             let (x, y) = (items[1], items[2]);
             polytope.items_mut()[1] = y;
             polytope.items_mut()[2] = x;
         }
-    }
-}
-
-fn remove<R: Copy, S: Storage<R>>(polytope: &mut S, index: usize) {
-    let kept: heapless::Vec<Corner<R>, 4> = polytope
-        .items()
-        .iter()
-        .enumerate()
-        .filter(|&(i, _)| i != index)
-        .map(|(_, c)| *c)
-        .collect();
-    polytope.clear_all();
-    for (i, c) in kept.into_iter().enumerate() {
-        polytope.insert_at(i, c);
     }
 }
 
@@ -315,7 +420,8 @@ fn estimate<R: Real>(
         // The polytope's outward normal points from B into A's side; B moves
         // the other way.
         normal: (-outward).to_glam(),
-        depth,
+        // Touching cores can round a bound a hair below zero.
+        depth: depth.max(R::ZERO),
         error_bound,
         iterations,
         status,

@@ -20,10 +20,7 @@ use crate::simplex::{Closest, Simplex};
 pub(crate) enum CoreProximity<R: Real> {
     /// The cores overlap or touch; the simplex encloses (or touches) the
     /// origin, EPA's starting point.
-    Overlapping {
-        simplex: Simplex<R>,
-        iterations: u32,
-    },
+    Overlapping { simplex: Simplex<R>, iterations: u32 },
     /// The cores are apart: closest point `v` of the Minkowski difference.
     Separated(CoreSeparation<R>),
 }
@@ -48,11 +45,7 @@ fn first_direction<R: Real>(centers: V2<R>) -> V2<R> {
 }
 
 /// Distance between the cores (radii not included).
-pub(crate) fn core_distance<R, A, B>(
-    pair: &Pair<'_, R, A, B>,
-    max_iterations: u32,
-    epsilon: R,
-) -> CoreProximity<R>
+pub(crate) fn core_distance<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreProximity<R>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,
@@ -66,24 +59,19 @@ where
     loop {
         let before = simplex;
         let v = match simplex.solve() {
-            Closest::Enclosed => {
-                return CoreProximity::Overlapping {
-                    simplex,
-                    iterations,
-                }
-            }
+            Closest::Enclosed => return CoreProximity::Overlapping { simplex, iterations },
             Closest::Point(v) => v,
         };
         let vv = v.length_squared();
         if vv == R::ZERO {
-            return CoreProximity::Overlapping {
-                simplex,
-                iterations,
-            };
+            return CoreProximity::Overlapping { simplex, iterations };
         }
         if let Some((s, pv, pvv)) = previous {
-            if vv >= pvv {
-                // No progress: the previous simplex was as close as rounding allows.
+            if vv > pvv {
+                // Rounding made |v| grow: the previous simplex was as close as
+                // it gets. (A tie is not a stall: near a vertex a segment can
+                // turn the direction a lot while |v| moves less than an ulp; the
+                // next support then repeats a vertex and ends the loop exactly.)
                 return separated(s, pv, lower_bound, iterations, Status::Converged);
             }
         }
@@ -95,10 +83,10 @@ where
         iterations += 1;
         let length = vv.sqrt();
         lower_bound = lower_bound.max(v.dot(w.w) / length);
-        if before.contains_id(w.id)
-            || simplex.contains_id(w.id)
-            || length - lower_bound <= tolerance
-        {
+        // The gap test needs a positive lower bound: with none, the support
+        // plane does not separate the origin, which may well be inside.
+        let gap_closed = lower_bound > R::ZERO && length - lower_bound <= tolerance;
+        if before.contains_id(w.id) || simplex.contains_id(w.id) || gap_closed {
             return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
         simplex.push(w);
@@ -112,13 +100,7 @@ fn separated<R: Real>(
     iterations: u32,
     status: Status,
 ) -> CoreProximity<R> {
-    CoreProximity::Separated(CoreSeparation {
-        simplex,
-        v,
-        lower_bound,
-        iterations,
-        status,
-    })
+    CoreProximity::Separated(CoreSeparation { simplex, v, lower_bound, iterations, status })
 }
 
 /// The intersection test: GJK that stops as soon as either verdict is
@@ -170,7 +152,7 @@ where
         if before.contains_id(w.id) || simplex.contains_id(w.id) {
             return (false, iterations, Status::Converged);
         }
-        if w.id == crate::minkowski::NO_ID && vv - vw <= tolerance * vv.sqrt() {
+        if w.id == crate::minkowski::NO_ID && vw > R::ZERO && vv - vw <= tolerance * vv.sqrt() {
             return (false, iterations, Status::Converged);
         }
         simplex.push(w);

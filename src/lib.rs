@@ -67,8 +67,8 @@ pub use ray::{LocalRayCast, Ray};
 pub use real::Real;
 pub use result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 pub use shape::{
-    Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap,
-    Triangle, NO_FEATURE,
+    Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
+    NO_FEATURE,
 };
 pub use transform::Transform;
 

@@ -69,11 +69,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let (cos, sin, rotated) = if ta.cos == tb.cos && ta.sin == tb.sin {
             (R::ONE, R::ZERO, false)
         } else {
-            (
-                ta.cos * tb.cos + ta.sin * tb.sin,
-                ta.cos * tb.sin - ta.sin * tb.cos,
-                true,
-            )
+            (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos, true)
         };
         let mut pair = Self {
             a,
@@ -95,18 +91,14 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let references = pair.rotate(reference_b) - reference_a;
         let translations = ta.inverse_rotate(tb.translation - ta.translation);
         pair.offset = translations + references;
-        pair.centers =
-            pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
+        pair.centers = pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
         pair
     }
 
     #[inline(always)]
     fn rotate(&self, v: V2<R>) -> V2<R> {
         if self.rotated {
-            V2::new(
-                self.cos * v.x - self.sin * v.y,
-                self.sin * v.x + self.cos * v.y,
-            )
+            V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
         } else {
             v
         }
@@ -114,10 +106,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[inline(always)]
     fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
         if self.rotated {
-            V2::new(
-                self.cos * v.x + self.sin * v.y,
-                -self.sin * v.x + self.cos * v.y,
-            )
+            V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
         } else {
             v
         }
@@ -130,11 +119,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam());
         let a = V2::from_glam(a);
         let b = self.rotate(V2::from_glam(b)) + self.offset;
-        let id = if ia == NO_FEATURE || ib == NO_FEATURE {
-            NO_ID
-        } else {
-            ((ia as u64) << 32) | ib as u64
-        };
+        let id = if ia == NO_FEATURE || ib == NO_FEATURE { NO_ID } else { ((ia as u64) << 32) | ib as u64 };
         MinkowskiVertex { w: b - a, a, b, id }
     }
 
@@ -148,15 +133,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     }
 }
 
-impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R>
-    for Pair<'_, R, A, B>
-{
+impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R> for Pair<'_, R, A, B> {
     fn support(&self, direction: R::Vector) -> SupportPoint<R> {
         let v = Pair::support(self, V2::from_glam(direction));
-        SupportPoint {
-            point: v.w.to_glam(),
-            id: v.id,
-        }
+        SupportPoint { point: v.w.to_glam(), id: v.id }
     }
     fn scale(&self) -> R {
         self.scale

@@ -35,9 +35,7 @@ impl<R: Real> Ray<R> {
         if m == R::ZERO {
             return Err(Error::ZeroLength);
         }
-        let direction = (d * (R::ONE / m))
-            .try_normalize()
-            .ok_or(Error::ZeroLength)?;
+        let direction = (d * (R::ONE / m)).try_normalize().ok_or(Error::ZeroLength)?;
         Ok(Self { origin, direction })
     }
     pub fn origin(&self) -> R::Vector {
@@ -50,21 +48,12 @@ impl<R: Real> Ray<R> {
 }
 
 fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
-    RayOutcome::Hit(RayHit {
-        distance: t,
-        point: (o + d * t).to_glam(),
-        normal: normal.to_glam(),
-    })
+    RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam() })
 }
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
 /// the hit is the last entry, its normal the entered face's.
-pub(crate) fn cast_ray_polygon<R: Real>(
-    vertices: &[V2<R>],
-    o: V2<R>,
-    d: V2<R>,
-    max: R,
-) -> RayCast<R> {
+pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let (mut lower, mut upper) = (R::ZERO, max);
     let mut entered: Option<V2<R>> = None;
     let n = vertices.len();
@@ -102,13 +91,7 @@ pub(crate) fn cast_ray_polygon<R: Real>(
 /// Ray against a disk. The root is taken in the form without cancellation,
 /// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
 /// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
-pub(crate) fn cast_ray_disk<R: Real>(
-    center: V2<R>,
-    r: R,
-    o: V2<R>,
-    d: V2<R>,
-    max: R,
-) -> RayCast<R> {
+pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let m = o - center;
     let mm = m.length();
     if mm <= r {
@@ -132,14 +115,7 @@ pub(crate) fn cast_ray_disk<R: Real>(
 /// Ray against the segment `a`-`a + delta` swept by `r` (> 0). The first hit
 /// on the union of the side band and the two end disks is the first hit of
 /// any of them.
-pub(crate) fn cast_ray_capsule<R: Real>(
-    a: V2<R>,
-    delta: V2<R>,
-    r: R,
-    o: V2<R>,
-    d: V2<R>,
-    max: R,
-) -> RayCast<R> {
+pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     if r <= R::ZERO {
         return cast_ray_segment(a, delta, o, d, max);
     }
@@ -191,10 +167,7 @@ fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R)
     // An origin on the segment (to rounding) is on the shape.
     let along = -rel.dot(delta);
     let scale = rel.length() + delta.length();
-    if along >= R::ZERO
-        && along <= delta.length_squared()
-        && delta.cross(rel).abs() <= slack * scale * delta.length()
-    {
+    if along >= R::ZERO && along <= delta.length_squared() && delta.cross(rel).abs() <= slack * scale * delta.length() {
         return RayCast::closed_form(RayOutcome::Inside);
     }
     let denominator = d.cross(delta);
@@ -275,19 +248,11 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
         if vw > R::ZERO {
             let vd = v.dot(d);
             if vd >= R::ZERO {
-                return RayCast {
-                    outcome: RayOutcome::Miss,
-                    iterations,
-                    status: Status::Converged,
-                };
+                return RayCast { outcome: RayOutcome::Miss, iterations, status: Status::Converged };
             }
             lambda -= vw / vd;
             if lambda > max {
-                return RayCast {
-                    outcome: RayOutcome::Miss,
-                    iterations,
-                    status: Status::Converged,
-                };
+                return RayCast { outcome: RayOutcome::Miss, iterations, status: Status::Converged };
             }
             x = o + d * lambda;
             normal = v;
@@ -315,23 +280,11 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
             }
         }
     };
-    let outcome = if lambda == R::ZERO {
-        RayOutcome::Inside
-    } else {
-        hit(o, d, lambda, normal.try_normalize().unwrap_or(-d))
-    };
-    RayCast {
-        outcome,
-        iterations,
-        status,
-    }
+    let outcome =
+        if lambda == R::ZERO { RayOutcome::Inside } else { hit(o, d, lambda, normal.try_normalize().unwrap_or(-d)) };
+    RayCast { outcome, iterations, status }
 }
 
 fn vertex<R: Real>(w: V2<R>, p: V2<R>) -> crate::minkowski::MinkowskiVertex<R> {
-    crate::minkowski::MinkowskiVertex {
-        w,
-        a: V2::zero(),
-        b: p,
-        id: crate::minkowski::NO_ID,
-    }
+    crate::minkowski::MinkowskiVertex { w, a: V2::zero(), b: p, id: crate::minkowski::NO_ID }
 }

@@ -148,26 +148,8 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(
-    f32,
-    glam::Vec2,
-    libm::sqrtf,
-    libm::sinf,
-    libm::cosf,
-    libm::atan2f,
-    libm::fmaf,
-    1.0e15
-);
-impl_real!(
-    f64,
-    glam::DVec2,
-    libm::sqrt,
-    libm::sin,
-    libm::cos,
-    libm::atan2,
-    libm::fma,
-    1.0e150
-);
+impl_real!(f32, glam::Vec2, libm::sqrtf, libm::sinf, libm::cosf, libm::atan2f, libm::fmaf, 1.0e15);
+impl_real!(f64, glam::DVec2, libm::sqrt, libm::sin, libm::cos, libm::atan2, libm::fma, 1.0e150);
 
 /// The internal 2D vector, generic over the scalar.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -288,8 +270,8 @@ pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
     let q_e = aby.mul_add(acx, -q);
     // Main term and its error, then the cross terms from the difference errors.
     let main = p - q;
-    let tail = (p_e - q_e) + (abx * acy_e + abx_e * acy) - (aby * acx_e + aby_e * acx)
-        + (abx_e * acy_e - aby_e * acx_e);
+    let tail =
+        (p_e - q_e) + (abx * acy_e + abx_e * acy) - (aby * acx_e + aby_e * acx) + (abx_e * acy_e - aby_e * acx_e);
     // When p and q nearly cancel, p - q is exact (Sterbenz) and the sign
     // comes from the tail of rounding errors, which is itself computed
     // almost exactly.

@@ -100,10 +100,6 @@ impl<R: Real> RayCast<R> {
         }
     }
     pub(crate) fn closed_form(outcome: RayOutcome<R>) -> Self {
-        Self {
-            outcome,
-            iterations: 0,
-            status: Status::Converged,
-        }
+        Self { outcome, iterations: 0, status: Status::Converged }
     }
 }

@@ -27,11 +27,7 @@ pub(crate) enum Closest<R> {
 
 impl<R: Real> Simplex<R> {
     pub fn new(first: MinkowskiVertex<R>) -> Self {
-        Self {
-            verts: [first; 3],
-            weights: [R::ONE, R::ZERO, R::ZERO],
-            len: 1,
-        }
+        Self { verts: [first; 3], weights: [R::ONE, R::ZERO, R::ZERO], len: 1 }
     }
 
     pub fn vertices(&self) -> &[MinkowskiVertex<R>] {
@@ -72,11 +68,7 @@ impl<R: Real> Simplex<R> {
         let area = (wb - wa).cross(wc - wa);
         // The origin is on the inner side of edge i->j when cross(wi, wj)
         // has the sign of the area (zero counts as inside: touching).
-        let edges = [
-            (a, b, wa.cross(wb)),
-            (b, c, wb.cross(wc)),
-            (c, a, wc.cross(wa)),
-        ];
+        let edges = [(a, b, wa.cross(wb)), (b, c, wb.cross(wc)), (c, a, wc.cross(wa))];
         let outside = |side: R| {
             if area > R::ZERO {
                 side < R::ZERO
@@ -124,19 +116,21 @@ impl<R: Real> Simplex<R> {
 
     /// Distance from the origin to the simplex's closest point and the unit
     /// normal towards it, in the most precise form for the face it lies on.
-    pub fn distance_and_normal(&self, v: V2<R>) -> Option<(R, V2<R>)> {
+    /// `toward` (B's center minus A's) orients the normal when the distance
+    /// rounds to exactly zero and the edge alone cannot tell its side.
+    pub fn distance_and_normal(&self, v: V2<R>, toward: V2<R>) -> Option<(R, V2<R>)> {
         if self.len == 2 {
             let (w1, w2) = (self.verts[0].w, self.verts[1].w);
             let n = (w2 - w1).perp();
             let len = n.length();
             if len > R::ZERO {
-                let signed = n.dot(w1) / len;
-                let unit = n * (R::ONE / len);
-                return if signed >= R::ZERO {
-                    Some((signed, unit))
-                } else {
-                    Some((-signed, -unit))
-                };
+                // Divided componentwise, an axis-aligned normal comes out as
+                // exactly (0, +-1) or (+-1, 0), so axis-aligned contacts give
+                // exact distances (a touching pair gives exactly 0).
+                let unit = V2::new(n.x / len, n.y / len);
+                let signed = unit.dot(w1);
+                let outward = signed > R::ZERO || (signed == R::ZERO && unit.dot(toward) >= R::ZERO);
+                return if outward { Some((signed, unit)) } else { Some((-signed, -unit)) };
             }
         }
         let len = v.length();
@@ -162,21 +156,13 @@ fn solve_segment<R: Real>(p: MinkowskiVertex<R>, q: MinkowskiVertex<R>) -> (Simp
     }
     let n = e.perp();
     let nn = n.length_squared();
-    if !(nn > R::ZERO) {
+    if nn <= R::ZERO {
         // An edge so short its squared length underflows: keep the nearer end.
-        let nearer = if p.w.length_squared() <= q.w.length_squared() {
-            p
-        } else {
-            q
-        };
+        let nearer = if p.w.length_squared() <= q.w.length_squared() { p } else { q };
         return (Simplex::new(nearer), nearer.w);
     }
     let inv = R::ONE / (toward_q + toward_p);
     let v = n * (n.dot(p.w) / nn);
-    let s = Simplex {
-        verts: [p, q, q],
-        weights: [toward_p * inv, toward_q * inv, R::ZERO],
-        len: 2,
-    };
+    let s = Simplex { verts: [p, q, q], weights: [toward_p * inv, toward_q * inv, R::ZERO], len: 2 };
     (s, v)
 }

@@ -22,11 +22,7 @@ impl<R: Real> Default for Transform<R> {
 
 impl<R: Real> Transform<R> {
     /// No rotation, no translation.
-    pub const IDENTITY: Self = Self {
-        translation: V2::new(R::ZERO, R::ZERO),
-        cos: R::ONE,
-        sin: R::ZERO,
-    };
+    pub const IDENTITY: Self = Self { translation: V2::new(R::ZERO, R::ZERO), cos: R::ONE, sin: R::ZERO };
 
     /// A translation and a rotation by `angle` radians (counter-clockwise).
     pub fn new(translation: R::Vector, angle: R) -> Result<Self, Error> {
@@ -45,10 +41,7 @@ impl<R: Real> Transform<R> {
     pub fn from_translation(translation: R::Vector) -> Result<Self, Error> {
         let t = V2::from_glam(translation);
         check_point(t)?;
-        Ok(Self {
-            translation: t,
-            ..Self::IDENTITY
-        })
+        Ok(Self { translation: t, ..Self::IDENTITY })
     }
 
     /// A translation and a rotation given by its cosine and sine, which are
@@ -93,23 +86,16 @@ impl<R: Real> Transform<R> {
     }
     /// World point to local.
     pub fn inverse_transform_point(&self, p: R::Vector) -> R::Vector {
-        self.inverse_rotate(V2::from_glam(p) - self.translation)
-            .to_glam()
+        self.inverse_rotate(V2::from_glam(p) - self.translation).to_glam()
     }
 
     #[inline(always)]
     pub(crate) fn rotate(&self, v: V2<R>) -> V2<R> {
-        V2::new(
-            self.cos * v.x - self.sin * v.y,
-            self.sin * v.x + self.cos * v.y,
-        )
+        V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
     }
     #[inline(always)]
     pub(crate) fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
-        V2::new(
-            self.cos * v.x + self.sin * v.y,
-            -self.sin * v.x + self.cos * v.y,
-        )
+        V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
     }
 }
 

@@ -30,8 +30,5 @@ fn random_inputs_never_panic_hang_or_give_non_finite_output() {
     }
     println!("{pairs} pair queries, {rays} ray casts");
     // Random bytes must reach the queries often, or this test proves nothing.
-    assert!(
-        pairs > 10_000 && rays > 10_000,
-        "only {pairs} pair queries and {rays} ray casts ran"
-    );
+    assert!(pairs > 10_000 && rays > 10_000, "only {pairs} pair queries and {rays} ray casts ran");
 }

@@ -72,9 +72,7 @@ macro_rules! known_answer_suite {
                     },
                     Case {
                         name: "triangle",
-                        shape: Box::new(
-                            Triangle::new(v(1.0, 0.0), v(-0.5, 0.8), v(-0.5, -0.8)).unwrap(),
-                        ),
+                        shape: Box::new(Triangle::new(v(1.0, 0.0), v(-0.5, 0.8), v(-0.5, -0.8)).unwrap()),
                         turn: one,
                         right: 1.0,
                         left: 0.5,
@@ -175,17 +173,9 @@ macro_rules! known_answer_suite {
                                 .distance(&*a.shape, &ta, &*b.shape, &tb)
                                 .unwrap_or_else(|| panic!("{what}: reported overlapping"));
                             assert!(sep.status.is_converged(), "{what}: {:?}", sep.status);
-                            assert!(
-                                (sep.distance - gap).abs() <= tol,
-                                "{what}: distance {} vs {gap}",
-                                sep.distance
-                            );
+                            assert!((sep.distance - gap).abs() <= tol, "{what}: distance {} vs {gap}", sep.distance);
                             let expected_normal = v(angle.cos(), angle.sin());
-                            assert!(
-                                (sep.normal - expected_normal).length() <= 1e-3,
-                                "{what}: normal {:?}",
-                                sep.normal
-                            );
+                            assert!((sep.normal - expected_normal).length() <= 1e-3, "{what}: normal {:?}", sep.normal);
                             // Closest points: on the rotated axis, gap apart.
                             assert!(
                                 ((sep.point_b - sep.point_a).length() - gap).abs() <= tol * 4.0,
@@ -194,10 +184,7 @@ macro_rules! known_answer_suite {
                                 sep.point_b
                             );
                             let det = gjk.intersects(&*a.shape, &ta, &*b.shape, &tb);
-                            assert!(
-                                !det.intersecting && det.status.is_converged(),
-                                "{what}: {det:?}"
-                            );
+                            assert!(!det.intersecting && det.status.is_converged(), "{what}: {det:?}");
                             assert!(
                                 gjk.penetration(&*a.shape, &ta, &*b.shape, &tb).is_none(),
                                 "{what}: penetration reported"
@@ -222,35 +209,19 @@ macro_rules! known_answer_suite {
                         let tb = place(angle, (1.0, 0.0), at);
                         let tol = tolerance(a.curved_right, 40.0);
                         let what = format!("{} into block at angle {angle}", a.name);
-                        let p = gjk
-                            .penetration(&*a.shape, &ta, &block, &tb)
-                            .unwrap_or_else(|| panic!("{what}: apart"));
+                        let p = gjk.penetration(&*a.shape, &ta, &block, &tb).unwrap_or_else(|| panic!("{what}: apart"));
                         assert!(p.status.is_converged(), "{what}: {:?}", p.status);
-                        assert!(
-                            (p.depth - delta).abs() <= tol,
-                            "{what}: depth {} vs {delta}",
-                            p.depth
-                        );
+                        assert!((p.depth - delta).abs() <= tol, "{what}: depth {} vs {delta}", p.depth);
                         assert!(
                             (p.normal - v(angle.cos(), angle.sin())).length() <= 1e-3,
                             "{what}: normal {:?}",
                             p.normal
                         );
-                        assert!(
-                            gjk.intersects(&*a.shape, &ta, &block, &tb).intersecting,
-                            "{what}"
-                        );
-                        assert!(
-                            gjk.distance(&*a.shape, &ta, &block, &tb).is_none(),
-                            "{what}"
-                        );
+                        assert!(gjk.intersects(&*a.shape, &ta, &block, &tb).intersecting, "{what}");
+                        assert!(gjk.distance(&*a.shape, &ta, &block, &tb).is_none(), "{what}");
                         // And the other way round: the normal flips.
                         let q = gjk.penetration(&block, &tb, &*a.shape, &ta).unwrap();
-                        assert!(
-                            (q.depth - delta).abs() <= tol,
-                            "{what} swapped: depth {}",
-                            q.depth
-                        );
+                        assert!((q.depth - delta).abs() <= tol, "{what} swapped: depth {}", q.depth);
                         assert!(
                             (q.normal + v(angle.cos(), angle.sin())).length() <= 1e-3,
                             "{what} swapped: normal {:?}",
@@ -272,42 +243,26 @@ macro_rules! known_answer_suite {
                             let tb = place(angle, b.turn, at);
                             let (c, s) = (angle.cos(), angle.sin());
                             let ray = Ray::new(v(0.0, 0.0), v(c, s)).unwrap();
-                            let what = format!(
-                                "ray at {} (angle {angle}, closed form {closed_form})",
-                                b.name
-                            );
+                            let what = format!("ray at {} (angle {angle}, closed form {closed_form})", b.name);
                             let cast = gjk.raycast(&ray, 0.0, &*b.shape, &tb);
                             let hit = cast.hit().unwrap_or_else(|| panic!("{what}: {cast:?}"));
                             let expected = at - b.left;
                             let curved = b.curved_left || !closed_form;
                             let tol = tolerance(curved, at + b.right) * 4.0;
-                            assert!(
-                                (hit.distance - expected).abs() <= tol,
-                                "{what}: t {} vs {expected}",
-                                hit.distance
-                            );
+                            assert!((hit.distance - expected).abs() <= tol, "{what}: t {} vs {expected}", hit.distance);
                             // Faces and smooth points have a definite normal; the
                             // slice's apex and the triangle's... left side is a face.
                             if b.name != "slice" && b.name != "polygon" {
-                                assert!(
-                                    (hit.normal + v(c, s)).length() <= 2e-3,
-                                    "{what}: normal {:?}",
-                                    hit.normal
-                                );
+                                assert!((hit.normal + v(c, s)).length() <= 2e-3, "{what}: normal {:?}", hit.normal);
                             }
                             // Too short: a miss. Starting inside: inside.
                             let short = gjk.raycast(&ray, expected * 0.5, &*b.shape, &tb);
                             assert_eq!(short.outcome, RayOutcome::Miss, "{what}: short ray");
                             // From the shape's center: inside.
-                            let center =
-                                tb.transform_point(b.shape.reference_point() + b.shape.center());
+                            let center = tb.transform_point(b.shape.reference_point() + b.shape.center());
                             let from_center = Ray::new(center, v(c, s)).unwrap();
                             let inside = gjk.raycast(&from_center, 0.0, &*b.shape, &tb);
-                            assert_eq!(
-                                inside.outcome,
-                                RayOutcome::Inside,
-                                "{what}: from the center"
-                            );
+                            assert_eq!(inside.outcome, RayOutcome::Inside, "{what}: from the center");
                         }
                     }
                 }

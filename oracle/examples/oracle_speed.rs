@@ -36,10 +36,7 @@ fn main() {
         for (_, b) in shapes.iter().take(if n >= 1000 { 3 } else { 200 }) {
             let _ = ray([-3.0, 0.1], [1.0, 0.05], 0.0, b);
         }
-        let rus =
-            start.elapsed().as_secs_f64() * 1e6 / cases.min(if n >= 1000 { 3 } else { 200 }) as f64;
-        println!(
-            "{n:5}-gon pairs: {us:9.1} us/pair ({overlapping}/{cases} overlapping); rays {rus:9.1} us/ray"
-        );
+        let rus = start.elapsed().as_secs_f64() * 1e6 / cases.min(if n >= 1000 { 3 } else { 200 }) as f64;
+        println!("{n:5}-gon pairs: {us:9.1} us/pair ({overlapping}/{cases} overlapping); rays {rus:9.1} us/ray");
     }
 }

@@ -50,33 +50,13 @@ impl Frame {
         };
         let a = scale(&sa.ints, &l / &sa.den);
         let b = scale(&sb.ints, &l / &sb.den);
-        let shift = a
-            .iter()
-            .chain(b.iter())
-            .flat_map(|p| p.iter())
-            .map(|c| c.bits())
-            .max()
-            .unwrap_or(0);
+        let shift = a.iter().chain(b.iter()).flat_map(|p| p.iter()).map(|c| c.bits()).max().unwrap_or(0);
         let f = |pts: &[V]| -> Vec<[f64; 2]> {
-            pts.iter()
-                .map(|p| {
-                    [
-                        big_to_f64_shifted(&p[0], shift),
-                        big_to_f64_shifted(&p[1], shift),
-                    ]
-                })
-                .collect()
+            pts.iter().map(|p| [big_to_f64_shifted(&p[0], shift), big_to_f64_shifted(&p[1], shift)]).collect()
         };
         let fa = f(&a);
         let fb = f(&b);
-        Frame {
-            a,
-            b,
-            fa,
-            fb,
-            shift,
-            l,
-        }
+        Frame { a, b, fa, fb, shift, l }
     }
 }
 
@@ -135,10 +115,7 @@ fn edges(k: usize) -> usize {
 fn directions(fr: &Frame) -> Vec<Dir> {
     let mut out = Vec::new();
     let mk = |n: V, ka, kb, shift| Dir {
-        nf: [
-            big_to_f64_shifted(&n[0], shift),
-            big_to_f64_shifted(&n[1], shift),
-        ],
+        nf: [big_to_f64_shifted(&n[0], shift), big_to_f64_shifted(&n[1], shift)],
         n,
         ka,
         kb,
@@ -148,12 +125,7 @@ fn directions(fr: &Frame) -> Vec<Dir> {
         if k == 2 {
             let e = sub(&pts[1], &pts[0]);
             let perp = [e[1].clone(), -&e[0]];
-            for n in [
-                perp.clone(),
-                [-&perp[0], -&perp[1]],
-                e.clone(),
-                [-&e[0], -&e[1]],
-            ] {
+            for n in [perp.clone(), [-&perp[0], -&perp[1]], e.clone(), [-&e[0], -&e[1]]] {
                 out.push(mk(n, None, None, fr.shift));
             }
         } else if k >= 3 {
@@ -172,14 +144,7 @@ fn directions(fr: &Frame) -> Vec<Dir> {
 
 /// Exact extreme of p·n over `pts` (max if `want_max`), evaluating exactly only the
 /// vertices whose float value is within `2*err` of the float extreme.
-fn exact_extreme(
-    pts: &[V],
-    fp: &[[f64; 2]],
-    d: &Dir,
-    err: f64,
-    exact_all: bool,
-    want_max: bool,
-) -> BigInt {
+fn exact_extreme(pts: &[V], fp: &[[f64; 2]], d: &Dir, err: f64, exact_all: bool, want_max: bool) -> BigInt {
     let vals: Vec<f64> = fp.iter().map(|p| fdot(p, &d.nf)).collect();
     let best = if want_max {
         vals.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
@@ -188,12 +153,7 @@ fn exact_extreme(
     };
     let mut res: Option<BigInt> = None;
     for (i, &v) in vals.iter().enumerate() {
-        let keep = exact_all
-            || if want_max {
-                v >= best - 2.0 * err
-            } else {
-                v <= best + 2.0 * err
-            };
+        let keep = exact_all || if want_max { v >= best - 2.0 * err } else { v <= best + 2.0 * err };
         if !keep {
             continue;
         }
@@ -221,28 +181,16 @@ struct FloatDir {
 fn float_overlap(fr: &Frame, d: &Dir) -> FloatDir {
     let maxa = match d.ka {
         Some(k) => fdot(&fr.fa[k], &d.nf),
-        None => fr
-            .fa
-            .iter()
-            .map(|p| fdot(p, &d.nf))
-            .fold(f64::NEG_INFINITY, f64::max),
+        None => fr.fa.iter().map(|p| fdot(p, &d.nf)).fold(f64::NEG_INFINITY, f64::max),
     };
     let minb = match d.kb {
         Some(k) => fdot(&fr.fb[k], &d.nf),
-        None => fr
-            .fb
-            .iter()
-            .map(|p| fdot(p, &d.nf))
-            .fold(f64::INFINITY, f64::min),
+        None => fr.fb.iter().map(|p| fdot(p, &d.nf)).fold(f64::INFINITY, f64::min),
     };
     let n1 = d.nf[0].abs() + d.nf[1].abs();
     let fo = maxa - minb;
     let exact_only = !(n1.is_finite() && n1 >= 1e-250 && fo.is_finite());
-    FloatDir {
-        fo,
-        err: 1e-11 * n1,
-        exact_only,
-    }
+    FloatDir { fo, err: 1e-11 * n1, exact_only }
 }
 
 fn exact_overlap(fr: &Frame, d: &Dir, f: &FloatDir) -> BigInt {
@@ -261,10 +209,7 @@ fn exact_overlap(fr: &Frame, d: &Dir, f: &FloatDir) -> BigInt {
 pub(crate) fn core_relation(fr: &Frame) -> CoreRel {
     if fr.a.len() == 1 && fr.b.len() == 1 {
         if fr.a[0] == fr.b[0] {
-            return CoreRel::Touching {
-                n: None,
-                unique: false,
-            };
+            return CoreRel::Touching { n: None, unique: false };
         }
         return apart(fr);
     }
@@ -291,10 +236,7 @@ pub(crate) fn core_relation(fr: &Frame) -> CoreRel {
     if !zeros.is_empty() {
         let first = &dirs[zeros[0]].n;
         let unique = zeros.iter().all(|&i| same_direction(first, &dirs[i].n));
-        return CoreRel::Touching {
-            n: Some(first.clone()),
-            unique,
-        };
+        return CoreRel::Touching { n: Some(first.clone()), unique };
     }
     // Penetration depth: min over directions of overlap(n)/|n|.
     let fv: Vec<Option<f64>> = dirs
@@ -349,11 +291,7 @@ pub(crate) fn core_relation(fr: &Frame) -> CoreRel {
     let n = dirs[best[0]].n.clone();
     let unique = best.iter().all(|&i| same_direction(&n, &dirs[i].n));
     let l2 = &fr.l * &fr.l;
-    CoreRel::Overlap {
-        depth2: Q::new(&best_o * &best_o, best_nn * l2),
-        n,
-        unique,
-    }
+    CoreRel::Overlap { depth2: Q::new(&best_o * &best_o, best_nn * l2), n, unique }
 }
 
 /// Float distance from p to segment [a, b] (prefilter only).
@@ -361,11 +299,7 @@ fn fdist_ps(p: &[f64; 2], a: &[f64; 2], b: &[f64; 2]) -> f64 {
     let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
     let (wx, wy) = (p[0] - a[0], p[1] - a[1]);
     let ee = ex * ex + ey * ey;
-    let t = if ee > 0.0 {
-        ((wx * ex + wy * ey) / ee).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
+    let t = if ee > 0.0 { ((wx * ex + wy * ey) / ee).clamp(0.0, 1.0) } else { 0.0 };
     let (dx, dy) = (wx - t * ex, wy - t * ey);
     dx.hypot(dy)
 }
@@ -392,20 +326,11 @@ fn exact_ps(p: &V, a: &V, b: &V) -> (BigInt, BigInt, BigInt, BigInt) {
 /// always involves a vertex of one set, so it is the minimum over vertex-of-one vs
 /// edge-of-other (vertex vs vertex for two points).
 fn apart(fr: &Frame) -> CoreRel {
-    let to_real = |p: &V| {
-        [
-            Q::new(p[0].clone(), fr.l.clone()),
-            Q::new(p[1].clone(), fr.l.clone()),
-        ]
-    };
+    let to_real = |p: &V| [Q::new(p[0].clone(), fr.l.clone()), Q::new(p[1].clone(), fr.l.clone())];
     let l2 = &fr.l * &fr.l;
     if fr.a.len() == 1 && fr.b.len() == 1 {
         let w = sub(&fr.b[0], &fr.a[0]);
-        return CoreRel::Apart {
-            d2: Q::new(dot(&w, &w), l2),
-            ca: to_real(&fr.a[0]),
-            cb: to_real(&fr.b[0]),
-        };
+        return CoreRel::Apart { d2: Q::new(dot(&w, &w), l2), ca: to_real(&fr.a[0]), cb: to_real(&fr.b[0]) };
     }
     // (vertex owner is A?, vertex index, edge index in the other core, float distance)
     let mut cands: Vec<(bool, usize, usize, f64)> = Vec::new();
@@ -425,11 +350,7 @@ fn apart(fr: &Frame) -> CoreRel {
         if finite && fd > dmin + 1e-10 {
             continue;
         }
-        let (pts, opts) = if vert_a {
-            (&fr.a, &fr.b)
-        } else {
-            (&fr.b, &fr.a)
-        };
+        let (pts, opts) = if vert_a { (&fr.a, &fr.b) } else { (&fr.b, &fr.a) };
         let k = opts.len();
         let (num, den, tn, td) = exact_ps(&pts[i], &opts[j], &opts[(j + 1) % k]);
         let better = match &best {
@@ -441,11 +362,7 @@ fn apart(fr: &Frame) -> CoreRel {
         }
     }
     let (num, den, vert_a, i, j, tn, td) = best.expect("no distance candidates");
-    let (pts, opts) = if vert_a {
-        (&fr.a, &fr.b)
-    } else {
-        (&fr.b, &fr.a)
-    };
+    let (pts, opts) = if vert_a { (&fr.a, &fr.b) } else { (&fr.b, &fr.a) };
     let k = opts.len();
     let (e0, e1) = (&opts[j], &opts[(j + 1) % k]);
     let t = Q::new(tn, td);
@@ -456,11 +373,7 @@ fn apart(fr: &Frame) -> CoreRel {
     ];
     let vtx = to_real(&pts[i]);
     let (ca, cb) = if vert_a { (vtx, proj) } else { (proj, vtx) };
-    CoreRel::Apart {
-        d2: Q::new(num, den * l2),
-        ca,
-        cb,
-    }
+    CoreRel::Apart { d2: Q::new(num, den * l2), ca, cb }
 }
 
 /// Exact squared distance between the cores of two shapes (0 if they touch or overlap).

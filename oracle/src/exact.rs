@@ -39,11 +39,7 @@ pub fn q_from_f64(x: f64) -> Q {
     let neg = bits >> 63 == 1;
     let exp = ((bits >> 52) & 0x7ff) as i64;
     let frac = bits & ((1u64 << 52) - 1);
-    let (m, e) = if exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), exp - 1075)
-    };
+    let (m, e) = if exp == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp - 1075) };
     let mut num = BigInt::from(m);
     if neg {
         num = -num;
@@ -75,11 +71,7 @@ fn round_scaled(neg: bool, m: BigUint, sticky: bool, e: i64) -> f64 {
         hi += 1u32;
     }
     let mut exp = e + drop;
-    let mut h: u64 = if hi.bits() > 64 {
-        u64::MAX
-    } else {
-        hi.iter_u64_digits().next().unwrap_or(0)
-    };
+    let mut h: u64 = if hi.bits() > 64 { u64::MAX } else { hi.iter_u64_digits().next().unwrap_or(0) };
     if h == 1u64 << 53 {
         h >>= 1;
         exp += 1;
@@ -117,11 +109,7 @@ pub fn q_to_f64(q: &Q) -> f64 {
     let p = q.numer().magnitude().clone();
     let d = q.denom().magnitude().clone();
     let s = 55 + d.bits() as i64 - p.bits() as i64;
-    let (m, rem) = if s >= 0 {
-        (p << (s as usize)).div_rem(&d)
-    } else {
-        p.div_rem(&(d << ((-s) as usize)))
-    };
+    let (m, rem) = if s >= 0 { (p << (s as usize)).div_rem(&d) } else { p.div_rem(&(d << ((-s) as usize))) };
     round_scaled(neg, m, !rem.is_zero(), -s)
 }
 
@@ -142,11 +130,7 @@ fn floor_div2(x: i64) -> i64 {
 fn sqrt_scaled(x: &Q, s: i64) -> (BigUint, bool) {
     let p = x.numer().magnitude().clone();
     let d = x.denom().magnitude().clone();
-    let (n, rem) = if s >= 0 {
-        (p << ((2 * s) as usize)).div_rem(&d)
-    } else {
-        p.div_rem(&(d << ((-2 * s) as usize)))
-    };
+    let (n, rem) = if s >= 0 { (p << ((2 * s) as usize)).div_rem(&d) } else { p.div_rem(&(d << ((-2 * s) as usize))) };
     let m = n.sqrt();
     let exact = rem.is_zero() && &m * &m == n;
     (m, exact)
@@ -194,11 +178,7 @@ pub fn sqrt_bounds(x: &Q, bits: u64) -> (Q, Q) {
     let s = bits as i64 + 2 - floor_div2(bp - 1 - bd);
     let (m, exact) = sqrt_scaled(x, s);
     let lo = dyadic(m.clone(), s);
-    let hi = if exact {
-        lo.clone()
-    } else {
-        dyadic(m + 1u32, s)
-    };
+    let hi = if exact { lo.clone() } else { dyadic(m + 1u32, s) };
     (lo, hi)
 }
 
@@ -267,11 +247,7 @@ fn sgn(x: &Q) -> i32 {
 
 impl QSqrt {
     pub fn rational(a: Q) -> Self {
-        QSqrt {
-            a,
-            b: Q::zero(),
-            g: Q::zero(),
-        }
+        QSqrt { a, b: Q::zero(), g: Q::zero() }
     }
 
     /// Exact sign (-1, 0, 1).
@@ -296,20 +272,12 @@ impl QSqrt {
 
     /// `self + q`.
     pub fn add_q(&self, q: &Q) -> Self {
-        QSqrt {
-            a: &self.a + q,
-            b: self.b.clone(),
-            g: self.g.clone(),
-        }
+        QSqrt { a: &self.a + q, b: self.b.clone(), g: self.g.clone() }
     }
 
     /// `self * q`.
     pub fn mul_q(&self, q: &Q) -> Self {
-        QSqrt {
-            a: &self.a * q,
-            b: &self.b * q,
-            g: self.g.clone(),
-        }
+        QSqrt { a: &self.a * q, b: &self.b * q, g: self.g.clone() }
     }
 
     /// `self^2`, which has the same form.

@@ -79,11 +79,7 @@ fn hit_plain(o: &[Q; 2], d: &[Q; 2], v: &[[Q; 2]]) -> Option<HitInfo> {
         1 => {
             let w = sub(&v[0], o);
             if cross(d, &w).is_zero() && dot(&w, d).is_positive() {
-                Some(HitInfo {
-                    t: QSqrt::rational(dot(&w, d) / &dd),
-                    normal: NormalKind::Face(minus_d),
-                    unique: false,
-                })
+                Some(HitInfo { t: QSqrt::rational(dot(&w, d) / &dd), normal: NormalKind::Face(minus_d), unique: false })
             } else {
                 None
             }
@@ -102,11 +98,7 @@ fn hit_plain(o: &[Q; 2], d: &[Q; 2], v: &[[Q; 2]]) -> Option<HitInfo> {
                 if !t.is_positive() {
                     return None;
                 }
-                return Some(HitInfo {
-                    t: QSqrt::rational(t),
-                    normal: NormalKind::Face(minus_d),
-                    unique: false,
-                });
+                return Some(HitInfo { t: QSqrt::rational(t), normal: NormalKind::Face(minus_d), unique: false });
             }
             let t = cross(&w, &e) / &den;
             let u = cross(&w, d) / &den;
@@ -118,11 +110,7 @@ fn hit_plain(o: &[Q; 2], d: &[Q; 2], v: &[[Q; 2]]) -> Option<HitInfo> {
                 n = [-&n[0], -&n[1]];
             }
             let unique = u.is_positive() && u < Q::one();
-            Some(HitInfo {
-                t: QSqrt::rational(t),
-                normal: NormalKind::Face(n),
-                unique,
-            })
+            Some(HitInfo { t: QSqrt::rational(t), normal: NormalKind::Face(n), unique })
         }
         k => {
             // Cyrus-Beck clipping against the edges' half-planes (origin is outside).
@@ -203,14 +191,7 @@ fn hit_round(o: &[Q; 2], d: &[Q; 2], v: &[[Q; 2]], r: &Q) -> Option<HitInfo> {
         if disc.is_negative() || !bq.is_negative() {
             continue;
         }
-        cands.push((
-            QSqrt {
-                a: -&bq / &dd,
-                b: -Q::one() / &dd,
-                g: disc,
-            },
-            NormalKind::Disk(c.clone()),
-        ));
+        cands.push((QSqrt { a: -&bq / &dd, b: -Q::one() / &dd, g: disc }, NormalKind::Disk(c.clone())));
     }
     let k = v.len();
     let edge_list: Vec<(usize, usize)> = match k {
@@ -232,11 +213,7 @@ fn hit_round(o: &[Q; 2], d: &[Q; 2], v: &[[Q; 2]], r: &Q) -> Option<HitInfo> {
         // n·(o + t d - v_i) = r |n|  =>  t = (r sqrt(nn) - n·(o - v_i)) / (n·d)
         let w = sub(o, &v[i]);
         let nn = dot(&n, &n);
-        let t = QSqrt {
-            a: -dot(&n, &w) / &nd,
-            b: r / &nd,
-            g: nn,
-        };
+        let t = QSqrt { a: -dot(&n, &w) / &nd, b: r / &nd, g: nn };
         if t.sign() < 0 {
             continue;
         }
@@ -258,39 +235,25 @@ fn hit_round(o: &[Q; 2], d: &[Q; 2], v: &[[Q; 2]], r: &Q) -> Option<HitInfo> {
                 best = i;
             }
         }
-        let separated = ivs
-            .iter()
-            .enumerate()
-            .all(|(i, iv)| i == best || iv.0 > ivs[best].1);
+        let separated = ivs.iter().enumerate().all(|(i, iv)| i == best || iv.0 > ivs[best].1);
         if separated || bits >= 4096 {
             break best;
         }
         bits *= 2;
     };
     let (t, normal) = cands.swap_remove(best);
-    Some(HitInfo {
-        t,
-        normal,
-        unique: true,
-    })
+    Some(HitInfo { t, normal, unique: true })
 }
 
 /// Ray cast of origin `o`, direction `d` (any non-zero length; `t` is reported in length
 /// units, `|hit - o|`), allowed length `max_len` (`<= 0` or infinite: unbounded) against
 /// an exact shape. See [`RayAnswer`] for the meaning of every field.
 pub fn ray(o: Pt, d: Pt, max_len: f64, s: &ExactShape) -> RayAnswer {
-    assert!(
-        d[0] != 0.0 || d[1] != 0.0,
-        "gjk2d-oracle: zero ray direction"
-    );
+    assert!(d[0] != 0.0 || d[1] != 0.0, "gjk2d-oracle: zero ray direction");
     let oq = [q_from_f64(o[0]), q_from_f64(o[1])];
     let dq = [q_from_f64(d[0]), q_from_f64(d[1])];
     let bounded = max_len.is_finite() && max_len > 0.0;
-    let ml = if bounded {
-        q_from_f64(max_len)
-    } else {
-        Q::zero()
-    };
+    let ml = if bounded { q_from_f64(max_len) } else { Q::zero() };
     let ml2 = &ml * &ml;
     let dd = dot(&dq, &dq);
     let r = s.radius().clone();
@@ -307,11 +270,8 @@ pub fn ray(o: Pt, d: Pt, max_len: f64, s: &ExactShape) -> RayAnswer {
         };
     }
 
-    let hit = if r.is_zero() {
-        hit_plain(&oq, &dq, s.core_vertices())
-    } else {
-        hit_round(&oq, &dq, s.core_vertices(), &r)
-    };
+    let hit =
+        if r.is_zero() { hit_plain(&oq, &dq, s.core_vertices()) } else { hit_round(&oq, &dq, s.core_vertices(), &r) };
     if let Some(h) = hit {
         // Within the allowed length iff t^2 |d|^2 <= max_len^2 (t >= 0).
         let within = !bounded || h.t.square().mul_q(&dd).add_q(&-&ml2).sign() <= 0;
@@ -334,22 +294,13 @@ pub fn ray(o: Pt, d: Pt, max_len: f64, s: &ExactShape) -> RayAnswer {
                 NormalKind::Face(n) => (unit_q(n, &dot(n, n)), h.unique),
                 NormalKind::Disk(c) => {
                     let comp = |k: usize| {
-                        let p =
-                            h.t.mul_q(&dq[k])
-                                .add_q(&(&oq[k] - &c[k]))
-                                .mul_q(&(Q::one() / &r));
+                        let p = h.t.mul_q(&dq[k]).add_q(&(&oq[k] - &c[k])).mul_q(&(Q::one() / &r));
                         round_iv(|bits| p.bounds(bits))
                     };
                     ([comp(0), comp(1)], true)
                 }
             };
-            return RayAnswer {
-                status: RayStatus::Hit,
-                t: t_len,
-                normal,
-                normal_unique: unique,
-                margin,
-            };
+            return RayAnswer { status: RayStatus::Hit, t: t_len, normal, normal_unique: unique, margin };
         }
     }
 
@@ -385,11 +336,5 @@ pub fn ray(o: Pt, d: Pt, max_len: f64, s: &ExactShape) -> RayAnswer {
             (lo - &r, hi - &r)
         })
     };
-    RayAnswer {
-        status: RayStatus::Miss,
-        t: f64::INFINITY,
-        normal: [0.0, 0.0],
-        normal_unique: false,
-        margin,
-    }
+    RayAnswer { status: RayStatus::Miss, t: f64::INFINITY, normal: [0.0, 0.0], normal_unique: false, margin }
 }

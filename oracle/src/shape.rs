@@ -58,12 +58,7 @@ impl ExactShape {
                 [f(&v[0]), f(&v[1])]
             })
             .collect();
-        ExactShape {
-            verts,
-            ints,
-            den,
-            radius,
-        }
+        ExactShape { verts, ints, den, radius }
     }
 
     /// A single exact point (radius 0).
@@ -112,10 +107,7 @@ fn orient(a: Pt, b: Pt, c: Pt) -> Ordering {
 fn hull(pts: &[Pt]) -> Vec<Pt> {
     assert!(!pts.is_empty(), "polygon without vertices");
     for p in pts {
-        assert!(
-            p[0].is_finite() && p[1].is_finite(),
-            "gjk2d-oracle: non-finite vertex"
-        );
+        assert!(p[0].is_finite() && p[1].is_finite(), "gjk2d-oracle: non-finite vertex");
     }
     let mut p: Vec<Pt> = pts.iter().map(|v| [v[0] + 0.0, v[1] + 0.0]).collect();
     p.sort_by(|a, b| a.partial_cmp(b).unwrap());
@@ -125,18 +117,14 @@ fn hull(pts: &[Pt]) -> Vec<Pt> {
     }
     let mut lower: Vec<Pt> = Vec::new();
     for &v in &p {
-        while lower.len() >= 2
-            && orient(lower[lower.len() - 2], lower[lower.len() - 1], v) != Ordering::Greater
-        {
+        while lower.len() >= 2 && orient(lower[lower.len() - 2], lower[lower.len() - 1], v) != Ordering::Greater {
             lower.pop();
         }
         lower.push(v);
     }
     let mut upper: Vec<Pt> = Vec::new();
     for &v in p.iter().rev() {
-        while upper.len() >= 2
-            && orient(upper[upper.len() - 2], upper[upper.len() - 1], v) != Ordering::Greater
-        {
+        while upper.len() >= 2 && orient(upper[upper.len() - 2], upper[upper.len() - 1], v) != Ordering::Greater {
             upper.pop();
         }
         upper.push(v);
@@ -155,11 +143,7 @@ fn dy_of(x: f64) -> Dy {
     let bits = x.to_bits();
     let exp = ((bits >> 52) & 0x7ff) as i64;
     let frac = bits & ((1u64 << 52) - 1);
-    let (m, e) = if exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1u64 << 52), exp - 1075)
-    };
+    let (m, e) = if exp == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp - 1075) };
     let m = BigInt::from(m);
     (if bits >> 63 == 1 { -m } else { m }, e)
 }
@@ -206,12 +190,7 @@ pub fn transform_shape(s: &Shape, cos: f64, sin: f64, tx: f64, ty: f64) -> Exact
     };
     let r = q_from_f64(radius);
     assert!(!r.is_negative(), "gjk2d-oracle: negative radius");
-    let (c, sn, x, y) = (
-        q_from_f64(cos),
-        q_from_f64(sin),
-        q_from_f64(tx),
-        q_from_f64(ty),
-    );
+    let (c, sn, x, y) = (q_from_f64(cos), q_from_f64(sin), q_from_f64(tx), q_from_f64(ty));
     if c.is_zero() && sn.is_zero() {
         // Degenerate map: everything collapses onto the translation.
         return ExactShape::from_core(vec![[x, y]], r);
@@ -224,10 +203,7 @@ pub fn transform_shape(s: &Shape, cos: f64, sin: f64, tx: f64, ty: f64) -> Exact
         .iter()
         .map(|p| {
             let (px, py) = (dy_of(p[0]), dy_of(p[1]));
-            [
-                dy_sum(&[(1, &dc, &px), (-1, &ds, &py)], &dx),
-                dy_sum(&[(1, &ds, &px), (1, &dc, &py)], &dy),
-            ]
+            [dy_sum(&[(1, &dc, &px), (-1, &ds, &py)], &dx), dy_sum(&[(1, &ds, &px), (1, &dc, &py)], &dy)]
         })
         .collect();
     ExactShape::from_core(verts, r)

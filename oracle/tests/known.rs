@@ -8,12 +8,7 @@ use num_traits::One;
 use std::f64::consts::{FRAC_1_SQRT_2, SQRT_2};
 
 fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> ExactShape {
-    ExactShape::from(&Shape::Polygon(vec![
-        [x0, y0],
-        [x1, y0],
-        [x1, y1],
-        [x0, y1],
-    ]))
+    ExactShape::from(&Shape::Polygon(vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]]))
 }
 
 fn unit() -> ExactShape {
@@ -21,10 +16,7 @@ fn unit() -> ExactShape {
 }
 
 fn circle(x: f64, y: f64, r: f64) -> ExactShape {
-    ExactShape::from(&Shape::Circle {
-        center: [x, y],
-        radius: r,
-    })
+    ExactShape::from(&Shape::Circle { center: [x, y], radius: r })
 }
 
 fn dec(s: &str) -> f64 {
@@ -86,10 +78,7 @@ fn circle_vs_square() {
 
     // Corner region: sqrt(2) - 1/2, correctly rounded.
     let p = pair(&unit(), &circle(2.0, 2.0, 0.5));
-    assert_eq!(
-        p.distance,
-        dec("0.91421356237309504880168872420969807856967187537694")
-    );
+    assert_eq!(p.distance, dec("0.91421356237309504880168872420969807856967187537694"));
     assert_eq!(p.normal, [FRAC_1_SQRT_2, FRAC_1_SQRT_2]);
     // Closest point on the circle: (2 - 0.5/sqrt2, 2 - 0.5/sqrt2).
     let c = dec("1.6464466094067262377995473150181");
@@ -135,42 +124,26 @@ fn circles() {
 
 #[test]
 fn capsule_vs_square() {
-    let cap = ExactShape::from(&Shape::Capsule {
-        a: [2.0, 0.0],
-        b: [2.0, 3.0],
-        radius: 0.5,
-    });
+    let cap = ExactShape::from(&Shape::Capsule { a: [2.0, 0.0], b: [2.0, 3.0], radius: 0.5 });
     let p = pair(&unit(), &cap);
     assert_eq!(p.distance, 0.5);
     assert_eq!(p.normal, [1.0, 0.0]);
     assert_eq!(p.point_a[0], 1.0);
     assert_eq!(p.point_b[0], 1.5);
 
-    let cap = ExactShape::from(&Shape::Capsule {
-        a: [-1.0, 1.5],
-        b: [3.0, 1.5],
-        radius: 0.25,
-    });
+    let cap = ExactShape::from(&Shape::Capsule { a: [-1.0, 1.5], b: [3.0, 1.5], radius: 0.25 });
     let p = pair(&unit(), &cap);
     assert_eq!(p.distance, 0.25);
     assert_eq!(p.normal, [0.0, 1.0]);
 
     // Capsule core crossing the square horizontally through its middle: the core
     // segment is inside; cheapest exit is up or down by 0.5 (+ radius 0.25), a tie.
-    let cap = ExactShape::from(&Shape::Capsule {
-        a: [-1.0, 0.5],
-        b: [3.0, 0.5],
-        radius: 0.25,
-    });
+    let cap = ExactShape::from(&Shape::Capsule { a: [-1.0, 0.5], b: [3.0, 0.5], radius: 0.25 });
     let p = pair(&unit(), &cap);
     assert_eq!(p.depth, 0.75);
     assert!(!p.normal_unique);
     // Slightly above the middle: unique, upwards, depth 0.375 + 0.25.
-    let cap = ExactShape::from(&Shape::Capsule {
-        a: [-1.0, 0.625],
-        b: [3.0, 0.625],
-        radius: 0.25,
-    });
+    let cap = ExactShape::from(&Shape::Capsule { a: [-1.0, 0.625], b: [3.0, 0.625], radius: 0.25 });
     let p = pair(&unit(), &cap);
     assert_eq!(p.depth, 0.625);
     assert_eq!(p.normal, [0.0, 1.0]);
@@ -259,24 +232,12 @@ fn triangle_depth_along_slanted_edge() {
 #[test]
 fn rotated_transform() {
     // 90 degrees: (x, y) -> (-y, x) then + (5, 0): unit square -> [4,5] x [0,1].
-    let b = transform_shape(
-        &Shape::Polygon(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]),
-        0.0,
-        1.0,
-        5.0,
-        0.0,
-    );
+    let b = transform_shape(&Shape::Polygon(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]), 0.0, 1.0, 5.0, 0.0);
     let p = pair(&unit(), &b);
     assert_eq!(p.distance, 3.0);
     assert_eq!(p.normal, [1.0, 0.0]);
     // Not normalising cos/sin: scale by 2 (cos = 2, sin = 0).
-    let b = transform_shape(
-        &Shape::Polygon(vec![[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]),
-        2.0,
-        0.0,
-        0.0,
-        0.0,
-    );
+    let b = transform_shape(&Shape::Polygon(vec![[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]), 2.0, 0.0, 0.0, 0.0);
     assert_eq!(pair(&unit(), &b).distance, 1.0);
 }
 
@@ -382,11 +343,7 @@ fn rays_on_round_shapes() {
     let r = ray([-3.0, 0.5], [1.0, 0.0], 0.0, &c);
     assert_eq!(r.t, dec("2.1339745962155613532208842153982"));
 
-    let cap = ExactShape::from(&Shape::Capsule {
-        a: [0.0, 0.0],
-        b: [2.0, 0.0],
-        radius: 1.0,
-    });
+    let cap = ExactShape::from(&Shape::Capsule { a: [0.0, 0.0], b: [2.0, 0.0], radius: 1.0 });
     let r = ray([1.0, 5.0], [0.0, -3.0], 0.0, &cap);
     assert_eq!(r.t, 4.0);
     assert_eq!(r.normal, [0.0, 1.0]);
@@ -445,10 +402,7 @@ fn correct_rounding_of_rationals() {
     // A hair below halfway -> down.
     assert_eq!(q_to_f64(&(&one + two(-53) - two(-300))), 1.0);
     // Halfway between 1 + 2^-52 and 1 + 2^-51: even is 1 + 2^-51.
-    assert_eq!(
-        q_to_f64(&(&one + two(-53) * Q::from_integer(3.into()))),
-        1.0 + 2.0 * f64::EPSILON
-    );
+    assert_eq!(q_to_f64(&(&one + two(-53) * Q::from_integer(3.into()))), 1.0 + 2.0 * f64::EPSILON);
     // Halfway to 1/3 neighbours: (fl(1/3) + next)/2 rounds to even.
     let t = 1.0f64 / 3.0;
     let t2 = f64::from_bits(t.to_bits() + 1);
@@ -458,10 +412,7 @@ fn correct_rounding_of_rationals() {
     // Subnormals and overflow.
     assert_eq!(q_to_f64(&two(-1075)), 0.0);
     assert_eq!(q_to_f64(&(two(-1075) + two(-1200))), f64::from_bits(1));
-    assert_eq!(
-        q_to_f64(&(two(-1076) * Q::from_integer(3.into()))),
-        f64::from_bits(1)
-    );
+    assert_eq!(q_to_f64(&(two(-1076) * Q::from_integer(3.into()))), f64::from_bits(1));
     assert_eq!(q_to_f64(&two(-1074)), f64::from_bits(1));
     assert_eq!(q_to_f64(&two(-1022)), f64::MIN_POSITIVE);
     assert_eq!(q_to_f64(&two(1024)), f64::INFINITY);

@@ -48,20 +48,13 @@ fn polygons_agree_with_float_reference() {
         let b0 = ngon(&mut rng, n, 0.7);
         let (c, s) = (rng.next().cos(), rng.next().sin());
         let (tx, ty) = (rng.next() * 4.0 - 2.0, rng.next() * 4.0 - 2.0);
-        let bt: Vec<[f64; 2]> = b0
-            .iter()
-            .map(|p| [c * p[0] - s * p[1] + tx, s * p[0] + c * p[1] + ty])
-            .collect();
+        let bt: Vec<[f64; 2]> = b0.iter().map(|p| [c * p[0] - s * p[1] + tx, s * p[0] + c * p[1] + ty]).collect();
         let ea = ExactShape::from(&Shape::Polygon(a.clone()));
         let eb = transform_shape(&Shape::Polygon(b0.clone()), c, s, tx, ty);
         let p = pair(&ea, &eb);
         if !p.touching_or_overlapping {
             let fd = float_dist(&a, &bt);
-            assert!(
-                (p.distance - fd).abs() < 1e-9,
-                "case {case}: {} vs {fd}",
-                p.distance
-            );
+            assert!((p.distance - fd).abs() < 1e-9, "case {case}: {} vs {fd}", p.distance);
             let dx = p.point_b[0] - p.point_a[0];
             let dy = p.point_b[1] - p.point_a[1];
             assert!((dx.hypot(dy) - p.distance).abs() < 1e-9);
@@ -70,10 +63,7 @@ fn polygons_agree_with_float_reference() {
             // (- a little) does not.
             let d = p.depth;
             let moved = |k: f64| {
-                let v: Vec<[f64; 2]> = bt
-                    .iter()
-                    .map(|q| [q[0] + p.normal[0] * k, q[1] + p.normal[1] * k])
-                    .collect();
+                let v: Vec<[f64; 2]> = bt.iter().map(|q| [q[0] + p.normal[0] * k, q[1] + p.normal[1] * k]).collect();
                 pair(&ea, &ExactShape::from(&Shape::Polygon(v))).touching_or_overlapping
             };
             assert!(!moved(d + 1e-9), "case {case}");
@@ -106,10 +96,7 @@ fn rays_agree_with_float_reference() {
     for _ in 0..200 {
         let r = rng.next() * 0.5 + 0.1;
         let c = [rng.next() * 2.0 - 1.0, rng.next() * 2.0 - 1.0];
-        let s = ExactShape::from(&Shape::Circle {
-            center: c,
-            radius: r,
-        });
+        let s = ExactShape::from(&Shape::Circle { center: c, radius: r });
         let o = [rng.next() * 6.0 - 3.0, rng.next() * 6.0 - 3.0];
         let d = [rng.next() * 2.0 - 1.0, rng.next() * 2.0 - 1.0];
         let ans = ray(o, d, 0.0, &s);

@@ -14,10 +14,7 @@ pub struct Capsule<R: Real> {
 impl<R: Real> Capsule<R> {
     /// The segment `a`-`b` (distinct points) swept by `radius` (> 0).
     pub fn new(a: R::Vector, b: R::Vector, radius: R) -> Result<Self, Error> {
-        Ok(Self {
-            core: Segment::new(a, b)?,
-            radius: check_length(radius)?,
-        })
+        Ok(Self { core: Segment::new(a, b)?, radius: check_length(radius)? })
     }
 
     /// dyn4j's constructor: a capsule `width` by `height` centered on the
@@ -34,15 +31,9 @@ impl<R: Real> Capsule<R> {
             half_core = radius * R::EPSILON;
         }
         let (a, b) = if along_x {
-            (
-                R::vector(-half_core, R::ZERO),
-                R::vector(half_core, R::ZERO),
-            )
+            (R::vector(-half_core, R::ZERO), R::vector(half_core, R::ZERO))
         } else {
-            (
-                R::vector(R::ZERO, -half_core),
-                R::vector(R::ZERO, half_core),
-            )
+            (R::vector(R::ZERO, -half_core), R::vector(R::ZERO, half_core))
         };
         Self::new(a, b, radius)
     }
@@ -76,13 +67,6 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
         self.core.reference_point()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_capsule(
-            V2::zero(),
-            self.core.delta,
-            self.radius,
-            V2::from_glam(o),
-            V2::from_glam(d),
-            max,
-        ))
+        Some(cast_ray_capsule(V2::zero(), self.core.delta, self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }
 }

@@ -18,10 +18,7 @@ impl<R: Real> Circle<R> {
     }
     /// A circle of `radius` (> 0) centered on `center` (local coordinates).
     pub fn at(center: R::Vector, radius: R) -> Result<Self, Error> {
-        Ok(Self {
-            center: check_point(V2::from_glam(center))?,
-            radius: check_length(radius)?,
-        })
+        Ok(Self { center: check_point(V2::from_glam(center))?, radius: check_length(radius)? })
     }
     pub fn center_point(&self) -> R::Vector {
         self.center.to_glam()
@@ -53,12 +50,6 @@ impl<R: Real> SupportMap<R> for Circle<R> {
         self.center.to_glam()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_disk(
-            V2::zero(),
-            self.radius,
-            V2::from_glam(o),
-            V2::from_glam(d),
-            max,
-        ))
+        Some(cast_ray_disk(V2::zero(), self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }
 }

@@ -13,12 +13,7 @@ pub struct Ellipse<R: Real> {
 impl<R: Real> Ellipse<R> {
     /// An ellipse `width` by `height` (full extents, both > 0), as dyn4j's.
     pub fn new(width: R, height: R) -> Result<Self, Error> {
-        Ok(Self {
-            half: V2::new(
-                check_length(width)? * R::HALF,
-                check_length(height)? * R::HALF,
-            ),
-        })
+        Ok(Self { half: V2::new(check_length(width)? * R::HALF, check_length(height)? * R::HALF) })
     }
     pub fn half_width(&self) -> R {
         self.half.x

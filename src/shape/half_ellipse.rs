@@ -19,10 +19,7 @@ impl<R: Real> HalfEllipse<R> {
         let axes = V2::new(check_length(width)? * R::HALF, check_length(height)?);
         // Centroid of a half ellipse: 4b / (3 pi) above the flat side.
         let cy = R::from_f64(4.0 / (3.0 * core::f64::consts::PI)) * axes.y;
-        Ok(Self {
-            axes,
-            centroid: V2::new(R::ZERO, cy),
-        })
+        Ok(Self { axes, centroid: V2::new(R::ZERO, cy) })
     }
     pub fn half_width(&self) -> R {
         self.axes.x

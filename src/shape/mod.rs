@@ -80,12 +80,7 @@ pub trait SupportMap<R: Real> {
     /// local frame (origin relative to the reference point, unit direction),
     /// `max_length` infinite when unbounded. `None` (the default) makes the ray
     /// cast iterate on the support function.
-    fn cast_local_ray(
-        &self,
-        origin: R::Vector,
-        direction: R::Vector,
-        max_length: R,
-    ) -> Option<LocalRayCast<R>> {
+    fn cast_local_ray(&self, origin: R::Vector, direction: R::Vector, max_length: R) -> Option<LocalRayCast<R>> {
         let _ = (origin, direction, max_length);
         None
     }

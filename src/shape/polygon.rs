@@ -56,12 +56,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         for &v in vertices.iter() {
             r2 = r2.max((v - center).length_squared());
         }
-        Ok(Self {
-            reference,
-            vertices,
-            center,
-            bounding_radius: r2.sqrt(),
-        })
+        Ok(Self { reference, vertices, center, bounding_radius: r2.sqrt() })
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
@@ -91,9 +86,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     }
     /// Vertex `i` (counter-clockwise order) in local coordinates.
     pub fn vertex(&self, i: usize) -> Option<R::Vector> {
-        self.vertices
-            .get(i)
-            .map(|&v| (v + self.reference).to_glam())
+        self.vertices.get(i).map(|&v| (v + self.reference).to_glam())
     }
     /// The area centroid in local coordinates.
     pub fn centroid(&self) -> R::Vector {
@@ -108,10 +101,9 @@ impl<R: Real, const N: usize> Polygon<R, N> {
 /// are exact already, and a shift would round them.
 pub(crate) fn choose_reference<R: Real>(points: &[V2<R>]) -> V2<R> {
     let first = points[0];
-    let exact = points.iter().all(|&p| {
-        crate::real::is_exact_difference(p.x, first.x)
-            && crate::real::is_exact_difference(p.y, first.y)
-    });
+    let exact = points
+        .iter()
+        .all(|&p| crate::real::is_exact_difference(p.x, first.x) && crate::real::is_exact_difference(p.y, first.y));
     let mut extent = R::ZERO;
     for &p in points {
         extent = extent.max((p - first).max_abs());
@@ -162,25 +154,28 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
     Ok(if left { 1 } else { -1 })
 }
 
-/// Area centroid of a counter-clockwise polygon given relative to its first
-/// vertex (so the fan from vertex 0 needs no further shift).
+/// Area centroid of a counter-clockwise polygon: a fan from vertex 0, on
+/// coordinates relative to it, so the triangles' areas and centers lose
+/// nothing to a far-away origin.
 pub(crate) fn area_centroid<R: Real>(v: &[V2<R>]) -> V2<R> {
+    let origin = v[0];
     let mut area2 = R::ZERO;
     let mut acc = V2::zero();
     for i in 1..v.len() - 1 {
-        let a = v[i].cross(v[i + 1]);
+        let (p, q) = (v[i] - origin, v[i + 1] - origin);
+        let a = p.cross(q);
         area2 += a;
-        acc = acc + (v[i] + v[i + 1]) * a;
+        acc = acc + (p + q) * a;
     }
     if area2 > R::ZERO {
-        acc * (R::ONE / (R::from_u32(3) * area2))
+        origin + acc * (R::ONE / (R::from_u32(3) * area2))
     } else {
         // Unreachable for validated polygons; the vertex mean is a safe center.
         let mut m = V2::zero();
         for &p in v {
-            m = m + p;
+            m = m + (p - origin);
         }
-        m * (R::ONE / R::from_u32(v.len() as u32))
+        origin + m * (R::ONE / R::from_u32(v.len() as u32))
     }
 }
 
@@ -204,11 +199,6 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
         self.reference.to_glam()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_polygon(
-            &self.vertices,
-            V2::from_glam(o),
-            V2::from_glam(d),
-            max,
-        ))
+        Some(cast_ray_polygon(&self.vertices, V2::from_glam(o), V2::from_glam(d), max))
     }
 }

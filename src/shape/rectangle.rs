@@ -14,12 +14,7 @@ pub struct Rectangle<R: Real> {
 impl<R: Real> Rectangle<R> {
     /// A `width` by `height` rectangle (both > 0), as dyn4j's `Rectangle`.
     pub fn new(width: R, height: R) -> Result<Self, Error> {
-        Ok(Self {
-            half: V2::new(
-                check_length(width)? * R::HALF,
-                check_length(height)? * R::HALF,
-            ),
-        })
+        Ok(Self { half: V2::new(check_length(width)? * R::HALF, check_length(height)? * R::HALF) })
     }
     pub fn width(&self) -> R {
         self.half.x * R::TWO
@@ -29,12 +24,7 @@ impl<R: Real> Rectangle<R> {
     }
     fn corners(&self) -> [V2<R>; 4] {
         let (x, y) = (self.half.x, self.half.y);
-        [
-            V2::new(-x, -y),
-            V2::new(x, -y),
-            V2::new(x, y),
-            V2::new(-x, y),
-        ]
+        [V2::new(-x, -y), V2::new(x, -y), V2::new(x, y), V2::new(-x, y)]
     }
 }
 
@@ -65,11 +55,6 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
         self.half.length()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_polygon(
-            &self.corners(),
-            V2::from_glam(o),
-            V2::from_glam(d),
-            max,
-        ))
+        Some(cast_ray_polygon(&self.corners(), V2::from_glam(o), V2::from_glam(d), max))
     }
 }

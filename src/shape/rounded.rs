@@ -16,10 +16,7 @@ pub struct Rounded<R: Real, S> {
 impl<R: Real, S: SupportMap<R>> Rounded<R, S> {
     /// `inner` swept by `radius` (> 0).
     pub fn new(inner: S, radius: R) -> Result<Self, Error> {
-        Ok(Self {
-            inner,
-            radius: check_length(radius)?,
-        })
+        Ok(Self { inner, radius: check_length(radius)? })
     }
     pub fn inner(&self) -> &S {
         &self.inner

@@ -61,13 +61,6 @@ impl<R: Real> SupportMap<R> for Segment<R> {
         self.start.to_glam()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_capsule(
-            V2::zero(),
-            self.delta,
-            R::ZERO,
-            V2::from_glam(o),
-            V2::from_glam(d),
-            max,
-        ))
+        Some(cast_ray_capsule(V2::zero(), self.delta, R::ZERO, V2::from_glam(o), V2::from_glam(d), max))
     }
 }

@@ -31,10 +31,7 @@ impl<R: Real> Slice<R> {
         Ok(Self {
             radius,
             cos_half: c,
-            ends: [
-                V2::new(radius * c, radius * s),
-                V2::new(radius * c, -radius * s),
-            ],
+            ends: [V2::new(radius * c, radius * s), V2::new(radius * c, -radius * s)],
             centroid: V2::new(cx, R::ZERO),
         })
     }

@@ -1,0 +1,208 @@
+#!/usr/bin/env bash
+# gjk2d on Cortex-M, under QEMU: known-answer tests on two boards, the golden
+# determinism hash (host = M4F = M3), instructions and stack per query, flash
+# budgets and the no-panic link check. Writes size-table.md, icount.md and
+# stack.md beside this script. Exits non-zero on any failure.
+#
+#   bash firmware/run.sh
+#
+# Needs qemu-system-arm on PATH (Debian: apt-get install qemu-system-arm, or
+# firmware/get-qemu.sh where apt cannot install it). Installs nothing itself
+# but rustup components and targets.
+#
+# ALLOW_PANIC_PATHS=1 reports surviving panic paths without failing.
+set -euo pipefail
+cd "$(dirname "$0")"
+FW="$(pwd)"
+ROOT="$(cd .. && pwd)"
+export CARGO_TERM_COLOR=never
+# The firmware's own target dir (gitignored); never the workspace's.
+export CARGO_TARGET_DIR="$FW/target"
+start=$(date +%s)
+failures=()
+fail() { failures+=("$*"); echo "FAILED: $*"; }
+step() { printf '\n--- %s ---\n' "$*"; }
+
+M4=thumbv7em-none-eabihf
+M0=thumbv6m-none-eabi
+rustup component add llvm-tools >/dev/null 2>&1 || rustup component add llvm-tools
+rustup target add "$M4" "$M0" >/dev/null 2>&1 || rustup target add "$M4" "$M0"
+HOST="$(rustc -vV | sed -n 's/^host: //p')"
+LLVM_BIN="$(rustc --print sysroot)/lib/rustlib/$HOST/bin"
+SIZE="$LLVM_BIN/llvm-size"
+OBJDUMP="$LLVM_BIN/llvm-objdump"
+command -v qemu-system-arm >/dev/null || {
+  echo "qemu-system-arm not found: apt-get install -y --no-install-recommends qemu-system-arm" >&2
+  echo "(or: bash firmware/get-qemu.sh && export PATH=\$HOME/.cache/gjk2d-qemu/bin:\$PATH)" >&2
+  exit 2
+}
+board() { case "$1" in "$M4") echo "mps2-an386 (Cortex-M4F)" ;; "$M0") echo "mps2-an385 (Cortex-M3, thumbv6m code)" ;; esac; }
+out="$CARGO_TARGET_DIR/run"
+mkdir -p "$out"
+
+# ---------------------------------------------------------------- tests
+expected_hash="$(tr -d ' \n' <"$ROOT/tests/golden_hash.txt")"
+for target in "$M4" "$M0"; do
+  step "known-answer tests and golden hash on $(board "$target")"
+  cargo build --release --bin kat --target "$target" -q
+  # The runner in .cargo/config.toml: timeout + qemu-system-arm.
+  if cargo run --release --bin kat --target "$target" -q >"$out/kat-$target.txt" 2>&1; then
+    grep -v '^golden' "$out/kat-$target.txt" | tail -n 20
+  else
+    cat "$out/kat-$target.txt"
+    fail "known-answer tests on $target"
+  fi
+  hash="$(sed -n 's/^golden hash \(0x[0-9a-f]*\)$/\1/p' "$out/kat-$target.txt")"
+  echo "golden hash on $target: ${hash:-none}, committed: $expected_hash"
+  [ "$hash" = "$expected_hash" ] || fail "golden hash on $target is ${hash:-missing}, tests/golden_hash.txt has $expected_hash"
+done
+
+step "golden hash on the host (tests/golden.rs)"
+# Uses the main workspace's own target dir (CI's cargo test built it already).
+if (cd "$ROOT" && env -u CARGO_TARGET_DIR cargo test -q --test golden -- --nocapture 2>&1) >"$out/golden-host.txt"; then
+  grep '^golden hash' "$out/golden-host.txt" || true
+else
+  cat "$out/golden-host.txt"
+  fail "host golden hash differs from tests/golden_hash.txt"
+fi
+
+# ---------------------------------------------------------------- icount and stack
+step "instructions and stack per query on $(board "$M4"), QEMU -icount shift=0"
+if cargo run --release --bin measure --target "$M4" -q >"$out/measure.txt" 2>&1; then
+  grep '^CALIBRATION' "$out/measure.txt" | cut -d'|' -f2-
+else
+  cat "$out/measure.txt"
+  fail "measure firmware"
+fi
+{
+  echo "| query (Cortex-M4F, opt-level \"s\", LTO) | precision | iterations | instructions |"
+  echo "| --- | --- | ---: | ---: |"
+  grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' '{printf "| %s | %s | %s | %.0f |\n", $3, $2, $4, $5}'
+  echo
+  echo "Instructions executed per query (QEMU \`-icount shift=0\`: SysTick at 25 MHz counts 40 instructions per tick;"
+  echo "each query is run 20 times between two reads, net of the loop's cost). $(grep '^CALIBRATION' "$out/measure.txt" | cut -d'|' -f2 | sed 's/^/Calibration: /')."
+  echo "Instructions, not cycles: for regressions and comparisons, not for real-time budgets."
+} >"$FW/icount.md"
+{
+  echo "| query (Cortex-M4F, opt-level \"s\", LTO) | precision | peak stack (bytes) |"
+  echo "| --- | --- | ---: |"
+  grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' '{printf "| %s | %s | %s |\n", $3, $2, $6}'
+  echo
+  echo "EPA's capacity \`N\` (\`Epa<R, N>\`, polytope vertices kept on the stack) against the peak stack of a penetration query"
+  echo "(two overlapping ellipses, the case that needs the most vertices):"
+  echo
+  echo "| \`Epa<R, N>\` | precision | iterations | peak stack (bytes) |"
+  echo "| --- | --- | ---: | ---: |"
+  grep '^MEASURE|' "$out/measure.txt" | grep 'Epa N' | awk -F'|' '{n=$3; sub(/.*N = /, "", n); printf "| N = %s | %s | %s | %s |\n", n, $2, $4, $6}'
+  echo
+  echo "Measured by painting 8 KB below the stack pointer, running the query and finding the lowest word that changed"
+  echo "(includes the call itself). The default is N = 32."
+} >"$FW/stack.md"
+cat "$FW/icount.md" "$FW/stack.md"
+# Budget: 1 KB for any query at the default capacities.
+while IFS='|' read -r _ precision name _ _ stack; do
+  if [ "$stack" -gt 1024 ]; then fail "stack budget: $precision $name uses $stack bytes (> 1024)"; fi
+done < <(grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' || true)
+
+# ---------------------------------------------------------------- flash and panics
+SIZE_BINS="size_0_empty size_1_intersect size_2_distance size_3_penetration size_4_raycast size_5_all_f32 size_5_all_f64"
+declare -A TEXT FLASH PANIC
+panic_report="$out/panic-paths.txt"
+: >"$panic_report"
+for target in "$M4" "$M0"; do
+  step "size firmwares and the no-panic link check, $target"
+  for bin in $SIZE_BINS; do
+    elf="$CARGO_TARGET_DIR/$target/release/$bin"
+    if cargo build --release --bin "$bin" --target "$target" -q >"$out/build-$bin-$target.txt" 2>&1; then
+      PANIC[$bin.$target]=no
+    else
+      if ! grep -q gjk2d_panic_path_linked "$out/build-$bin-$target.txt"; then
+        cat "$out/build-$bin-$target.txt"
+        fail "build of $bin for $target"
+        continue
+      fi
+      PANIC[$bin.$target]=yes
+      # Link again with the symbol defined, to measure and to name the callers.
+      RUSTFLAGS="-C link-arg=-Tlink.x -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
+        CARGO_TARGET_DIR="$FW/target/panic-diag" cargo build --release --bin "$bin" --target "$target" -q
+      elf="$FW/target/panic-diag/$target/release/$bin"
+      {
+        echo "== $bin ($target): panic paths (caller, innermost source line, panic entry)"
+        "$OBJDUMP" -d -C -l "$elf" | awk -f "$FW/panic-callers.awk" | sed 's/::h[0-9a-f]\{16\}//'
+      } >>"$panic_report"
+      echo "$bin: a panic path survives (see below)"
+    fi
+    sizes="$("$SIZE" -A "$elf")"
+    text=$(awk '$1==".text"{print $2}' <<<"$sizes")
+    flash=$(awk '$1==".vector_table"||$1==".text"||$1==".rodata"||$1==".data"{s+=$2} END{print s}' <<<"$sizes")
+    TEXT[$bin.$target]=$text
+    FLASH[$bin.$target]=$flash
+  done
+done
+if [ -s "$panic_report" ]; then
+  step "panic paths that survive in release (LTO) builds"
+  cat "$panic_report"
+  if [ "${ALLOW_PANIC_PATHS:-0}" = 1 ]; then
+    echo "(ALLOW_PANIC_PATHS=1: reported, not failed)"
+  else
+    fail "panic paths survive in the size firmwares (see $panic_report)"
+  fi
+fi
+
+declare -A BUDGET=([size_1_intersect]=2048 [size_2_distance]=4096 [size_3_penetration]=6144 [size_5_all_f32]=12288)
+declare -A LABEL=(
+  [size_0_empty]="(0) empty firmware (baseline)"
+  [size_1_intersect]="(1) polygon intersection"
+  [size_2_distance]="(2) + distance"
+  [size_3_penetration]="(3) + EPA penetration"
+  [size_4_raycast]="(4) + ray casts"
+  [size_5_all_f32]="(5) every shape and query, f32"
+  [size_5_all_f64]="(5) every shape and query, f64"
+)
+kb() { awk -v b="$1" 'BEGIN{printf "%.2f KB", b/1024}'; }
+{
+  echo "| firmware | thumbv7em .text | thumbv7em flash | budget (.text) | thumbv6m .text | thumbv6m flash |"
+  echo "| --- | ---: | ---: | ---: | ---: | ---: |"
+  for bin in $SIZE_BINS; do
+    row="| ${LABEL[$bin]}"
+    for target in "$M4" "$M0"; do
+      t=${TEXT[$bin.$target]:-0}
+      f=${FLASH[$bin.$target]:-0}
+      if [ "$bin" = size_0_empty ]; then
+        row="$row | $t B (absolute) | $f B (absolute)"
+      else
+        dt=$((t - ${TEXT[size_0_empty.$target]:-0}))
+        df=$((f - ${FLASH[size_0_empty.$target]:-0}))
+        mark=""
+        [ "${PANIC[$bin.$target]:-no}" = yes ] && mark=" (panic path!)"
+        row="$row | +$dt B ($(kb $dt))$mark | +$df B ($(kb $df))"
+      fi
+      if [ "$target" = "$M4" ]; then
+        if [ -n "${BUDGET[$bin]:-}" ]; then row="$row | <= $(kb ${BUDGET[$bin]})"; else row="$row | -"; fi
+      fi
+    done
+    echo "$row |"
+  done
+  echo
+  echo "Growth over the empty cortex-m-rt firmware, release profile with \`opt-level = \"s\"\`, \`lto = true\`,"
+  echo "\`codegen-units = 1\`, \`panic = \"abort\"\`. Flash = .vector_table + .text + .rodata + .data. Inputs come from"
+  echo "volatile statics and every output goes to one, so nothing is constant-folded away. (1) to (4) use"
+  echo "\`Polygon<f32, 8>\` pairs (constructor included); (5) builds every shape kind and runs every query through"
+  echo "\`&dyn SupportMap\`, with \`Transform::new\` (sin, cos). On thumbv6m (Cortex-M0/M0+/M3 code) f32 is soft-float."
+} >"$FW/size-table.md"
+step "flash"
+cat "$FW/size-table.md"
+for bin in "${!BUDGET[@]}"; do
+  t=${TEXT[$bin.$M4]:-}
+  [ -n "$t" ] || continue
+  dt=$((t - ${TEXT[size_0_empty.$M4]:-0}))
+  [ "$dt" -le "${BUDGET[$bin]}" ] || fail "flash budget: ${LABEL[$bin]} is $dt bytes of .text on thumbv7em (> ${BUDGET[$bin]})"
+done
+
+step "summary"
+echo "run.sh took $(($(date +%s) - start)) s"
+if [ ${#failures[@]} -gt 0 ]; then
+  printf 'FAILED: %s\n' "${failures[@]}"
+  exit 1
+fi
+echo "firmware: all checks passed"

@@ -1,0 +1,242 @@
+//! Instructions (QEMU -icount shift=0, SysTick) and peak stack per query on
+//! the Cortex-M4F, f32 and f64, at the default capacities, and how EPA's
+//! capacity N changes the stack. Prints one `MEASURE|...` line per case
+//! (run.sh turns them into firmware/icount.md and firmware/stack.md).
+#![no_std]
+#![no_main]
+
+use core::hint::black_box as bb;
+use cortex_m_rt::entry;
+use cortex_m_semihosting::{debug, hprintln};
+use gjk2d::{Capsule, Circle, Ellipse, Epa, Gjk, GjkConfig, Polygon, Ray, Real, Transform};
+use gjk2d_firmware::meter;
+use panic_semihosting as _;
+
+struct Ctx {
+    overhead: u32,
+}
+
+fn report(ctx: &Ctx, precision: &str, name: &str, iterations: u32, f: &dyn Fn()) {
+    let ix100 = meter::instructions_x100(f, ctx.overhead);
+    let stack = meter::stack_bytes(f);
+    hprintln!(
+        "MEASURE|{}|{}|{}|{}.{:02}|{}",
+        precision,
+        name,
+        iterations,
+        ix100 / 100,
+        ix100 % 100,
+        stack
+    );
+}
+
+fn v<R: Real>(x: f64, y: f64) -> R::Vector {
+    R::vector(R::from_f64(x), R::from_f64(y))
+}
+
+fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
+    let gjk = Gjk::<R>::new();
+    let sq = [
+        v::<R>(0.0, 0.0),
+        v::<R>(1.0, 0.0),
+        v::<R>(1.0, 1.0),
+        v::<R>(0.0, 1.0),
+    ];
+    let a = Polygon::<R, 8>::new(&sq).ok()?;
+    let b = Polygon::<R, 8>::regular(6, R::from_f64(0.6)).ok()?;
+    let ta = Transform::<R>::IDENTITY;
+    let apart = Transform::<R>::new(v::<R>(2.2, 0.7), R::from_f64(0.3)).ok()?;
+    let over = Transform::<R>::new(v::<R>(1.3, 0.6), R::from_f64(0.3)).ok()?;
+    let circle = Circle::<R>::new(R::from_f64(0.5)).ok()?;
+    let capsule = Capsule::<R>::new(v::<R>(-0.5, 0.0), v::<R>(0.5, 0.0), R::from_f64(0.25)).ok()?;
+    let ea = Ellipse::<R>::new(R::from_f64(4.0), R::from_f64(2.0)).ok()?;
+    let eb = Ellipse::<R>::new(R::from_f64(2.0), R::from_f64(3.0)).ok()?;
+    let e_apart = Transform::<R>::new(v::<R>(3.6, 0.9), R::from_f64(0.4)).ok()?;
+    let e_over = Transform::<R>::new(v::<R>(2.6, 0.5), R::from_f64(0.4)).ok()?;
+    let ray = Ray::<R>::new(v::<R>(-2.0, 0.3), v::<R>(1.0, 0.1)).ok()?;
+
+    let it = |d: Option<u32>| d.unwrap_or(0);
+    report(
+        ctx,
+        p,
+        "intersects polygon4-hexagon, apart",
+        gjk.intersects(&a, &ta, &b, &apart).iterations,
+        &|| {
+            bb(gjk.intersects(bb(&a), bb(&ta), bb(&b), bb(&apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "intersects polygon4-hexagon, overlapping",
+        gjk.intersects(&a, &ta, &b, &over).iterations,
+        &|| {
+            bb(gjk.intersects(bb(&a), bb(&ta), bb(&b), bb(&over)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "distance polygon4-hexagon",
+        it(gjk.distance(&a, &ta, &b, &apart).map(|s| s.iterations)),
+        &|| {
+            bb(gjk.distance(bb(&a), bb(&ta), bb(&b), bb(&apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "penetration polygon4-hexagon (EPA)",
+        it(gjk.penetration(&a, &ta, &b, &over).map(|s| s.iterations)),
+        &|| {
+            bb(gjk.penetration(bb(&a), bb(&ta), bb(&b), bb(&over)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "raycast polygon4 (closed form)",
+        gjk.raycast(&ray, R::ZERO, &a, &apart).iterations,
+        &|| {
+            bb(gjk.raycast(bb(&ray), R::ZERO, bb(&a), bb(&apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "intersects circle-polygon4",
+        gjk.intersects(&a, &ta, &circle, &over).iterations,
+        &|| {
+            bb(gjk.intersects(bb(&a), bb(&ta), bb(&circle), bb(&over)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "distance capsule-polygon4",
+        it(gjk
+            .distance(&a, &ta, &capsule, &apart)
+            .map(|s| s.iterations)),
+        &|| {
+            bb(gjk.distance(bb(&a), bb(&ta), bb(&capsule), bb(&apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "penetration capsule-polygon4",
+        it(gjk
+            .penetration(&a, &ta, &capsule, &over)
+            .map(|s| s.iterations)),
+        &|| {
+            bb(gjk.penetration(bb(&a), bb(&ta), bb(&capsule), bb(&over)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "raycast capsule (closed form)",
+        gjk.raycast(&ray, R::ZERO, &capsule, &apart).iterations,
+        &|| {
+            bb(gjk.raycast(bb(&ray), R::ZERO, bb(&capsule), bb(&apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "intersects ellipse-ellipse, apart",
+        gjk.intersects(&ea, &ta, &eb, &e_apart).iterations,
+        &|| {
+            bb(gjk.intersects(bb(&ea), bb(&ta), bb(&eb), bb(&e_apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "distance ellipse-ellipse",
+        it(gjk.distance(&ea, &ta, &eb, &e_apart).map(|s| s.iterations)),
+        &|| {
+            bb(gjk.distance(bb(&ea), bb(&ta), bb(&eb), bb(&e_apart)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "penetration ellipse-ellipse (EPA)",
+        it(gjk
+            .penetration(&ea, &ta, &eb, &e_over)
+            .map(|s| s.iterations)),
+        &|| {
+            bb(gjk.penetration(bb(&ea), bb(&ta), bb(&eb), bb(&e_over)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "raycast ellipse (GJK ray cast)",
+        gjk.raycast(&ray, R::ZERO, &ea, &e_apart).iterations,
+        &|| {
+            bb(gjk.raycast(bb(&ray), R::ZERO, bb(&ea), bb(&e_apart)));
+        },
+    );
+
+    // EPA's capacity N (polytope vertices on the stack).
+    macro_rules! epa_n {
+        ($n:literal) => {{
+            let g = Gjk::with_solver(GjkConfig::<R>::default(), Epa::<R, $n>::default());
+            let pen = g.penetration(&ea, &ta, &eb, &e_over);
+            report(
+                ctx,
+                p,
+                concat!("penetration ellipse-ellipse, Epa N = ", stringify!($n)),
+                it(pen.map(|s| s.iterations)),
+                &|| {
+                    bb(g.penetration(bb(&ea), bb(&ta), bb(&eb), bb(&e_over)));
+                },
+            );
+        }};
+    }
+    epa_n!(8);
+    epa_n!(16);
+    epa_n!(32);
+    epa_n!(64);
+    Some(())
+}
+
+#[entry]
+fn main() -> ! {
+    let mut cp = cortex_m::Peripherals::take().unwrap();
+    meter::start_systick(&mut cp.SYST);
+
+    // Check the rate: 2 x 100_000 known instructions.
+    let overhead = meter::ticks(&|| {});
+    let known = meter::ticks(&|| meter::known_instructions(bb(5_000)));
+    // REPEAT x (2 x 5000 + call) instructions.
+    let per_tick_x100 =
+        (meter::REPEAT * 10_000) as u64 * 100 / known.saturating_sub(overhead).max(1) as u64;
+    hprintln!(
+        "CALIBRATION|{} ticks for {} x 10000 instructions: {}.{:02} instructions per tick (expected {})|loop overhead {} ticks",
+        known - overhead,
+        meter::REPEAT,
+        per_tick_x100 / 100,
+        per_tick_x100 % 100,
+        meter::INSTRUCTIONS_PER_TICK,
+        overhead
+    );
+    let ctx = Ctx { overhead };
+    let ok = suite::<f32>(&ctx, "f32").is_some() & suite::<f64>(&ctx, "f64").is_some();
+    hprintln!(
+        "measure {}",
+        if ok {
+            "done"
+        } else {
+            "FAILED to build the shapes"
+        }
+    );
+    debug::exit(if ok {
+        debug::EXIT_SUCCESS
+    } else {
+        debug::EXIT_FAILURE
+    });
+    loop {}
+}

@@ -1,0 +1,12 @@
+//! Size firmware: every shape kind and every query, f64.
+#![no_std]
+#![no_main]
+
+#[path = "../size_common.rs"]
+mod common;
+
+#[cortex_m_rt::entry]
+fn main() -> ! {
+    common::everything::<f64>();
+    loop {}
+}

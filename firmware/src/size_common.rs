@@ -1,0 +1,229 @@
+//! Shared by the size firmwares (src/bin/size_*.rs): inputs the optimizer
+//! cannot see (volatile reads of statics in RAM), a sink for the results
+//! (volatile writes), the queries each firmware links, and the no-panic
+//! check: the panic handler calls a function that exists nowhere, so the
+//! release (LTO) link fails if any panic path survives.
+#![allow(dead_code)]
+
+use core::panic::PanicInfo;
+use core::ptr::{addr_of, addr_of_mut, read_volatile, write_volatile};
+use gjk2d::{
+    Capsule, Circle, Ellipse, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded,
+    Segment, Slice, SupportMap, Transform, Triangle,
+};
+
+#[panic_handler]
+fn panic(_: &PanicInfo) -> ! {
+    extern "C" {
+        /// Defined nowhere: linking it means a panic path survived.
+        fn gjk2d_panic_path_linked() -> !;
+    }
+    unsafe { gjk2d_panic_path_linked() }
+}
+
+/// Inputs: a unit square, the same square, a placement (0.5, 0.25) with
+/// (cos, sin) = (1, 0), a ray from (-2, 0.5) along +x, then sizes.
+const INPUT: [f64; 32] = [
+    0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, // polygon A
+    0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, // polygon B
+    0.5, 0.25, 1.0, 0.0, // B's placement: translation, cos, sin
+    -2.0, 0.5, 1.0, 0.0, // ray origin, direction
+    0.5, 0.25, 2.0, 1.0, 1.2, 0.0, 3.0,
+    0.0, // radius, radius, width, height, angle, 0, shape pair, 0
+];
+
+#[no_mangle]
+static mut GJK2D_IN32: [f32; 32] = {
+    let mut a = [0.0f32; 32];
+    let mut i = 0;
+    while i < 32 {
+        a[i] = INPUT[i] as f32;
+        i += 1;
+    }
+    a
+};
+#[no_mangle]
+static mut GJK2D_IN64: [f64; 32] = INPUT;
+#[no_mangle]
+static mut GJK2D_OUT32: u32 = 0;
+#[no_mangle]
+static mut GJK2D_OUT64: u64 = 0;
+
+/// A precision whose inputs and outputs go through volatile statics.
+pub trait Io: Real {
+    fn input(i: usize) -> Self;
+    fn sink(self);
+}
+
+impl Io for f32 {
+    #[inline(always)]
+    fn input(i: usize) -> f32 {
+        unsafe { read_volatile(addr_of!(GJK2D_IN32).cast::<f32>().add(i & 31)) }
+    }
+    #[inline(always)]
+    fn sink(self) {
+        unsafe { write_volatile(addr_of_mut!(GJK2D_OUT32), self.to_bits()) }
+    }
+}
+
+impl Io for f64 {
+    #[inline(always)]
+    fn input(i: usize) -> f64 {
+        unsafe { read_volatile(addr_of!(GJK2D_IN64).cast::<f64>().add(i & 31)) }
+    }
+    #[inline(always)]
+    fn sink(self) {
+        unsafe { write_volatile(addr_of_mut!(GJK2D_OUT64), self.to_bits()) }
+    }
+}
+
+#[inline(always)]
+pub fn sink_u32(x: u32) {
+    unsafe { write_volatile(addr_of_mut!(GJK2D_OUT32), x) }
+}
+
+#[inline(always)]
+fn sink_v<R: Io>(v: R::Vector) {
+    let (x, y) = R::components(v);
+    x.sink();
+    y.sink();
+}
+
+fn vec<R: Io>(i: usize) -> R::Vector {
+    R::vector(R::input(i), R::input(i + 1))
+}
+
+/// The empty firmware's work: one input to the output.
+pub fn baseline() {
+    f32::input(0).sink();
+}
+
+pub struct Polygons<R: Io> {
+    pub a: Polygon<R, 8>,
+    pub b: Polygon<R, 8>,
+    pub tb: Transform<R>,
+}
+
+/// Two polygons and B's placement, from the inputs.
+pub fn polygons<R: Io>() -> Option<Polygons<R>> {
+    let a = Polygon::new(&[vec::<R>(0), vec::<R>(2), vec::<R>(4), vec::<R>(6)]).ok()?;
+    let b = Polygon::new(&[vec::<R>(8), vec::<R>(10), vec::<R>(12), vec::<R>(14)]).ok()?;
+    let tb = Transform::from_cos_sin(vec::<R>(16), R::input(18), R::input(19)).ok()?;
+    Some(Polygons { a, b, tb })
+}
+
+pub fn intersects<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    let d = gjk.intersects(a, &Transform::IDENTITY, b, tb);
+    sink_u32(d.intersecting as u32 | d.iterations << 1 | (d.status as u32) << 16);
+}
+
+pub fn distance<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    if let Some(s) = gjk.distance(a, &Transform::IDENTITY, b, tb) {
+        s.distance.sink();
+        sink_v::<R>(s.normal);
+        sink_v::<R>(s.point_a);
+        sink_v::<R>(s.point_b);
+        s.error_bound.sink();
+        sink_u32(s.iterations | (s.status as u32) << 16);
+    }
+}
+
+pub fn penetration<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    if let Some(p) = gjk.penetration(a, &Transform::IDENTITY, b, tb) {
+        p.depth.sink();
+        sink_v::<R>(p.normal);
+        p.error_bound.sink();
+        sink_u32(p.iterations | (p.status as u32) << 16);
+    }
+}
+
+pub fn raycast<R: Io, S: SupportMap<R> + ?Sized>(gjk: &Gjk<R>, shape: &S, t: &Transform<R>) {
+    if let Ok(ray) = Ray::new(vec::<R>(20), vec::<R>(22)) {
+        let cast = gjk.raycast(&ray, R::ZERO, shape, t);
+        match cast.outcome {
+            RayOutcome::Hit(h) => {
+                h.distance.sink();
+                sink_v::<R>(h.point);
+                sink_v::<R>(h.normal);
+            }
+            RayOutcome::Miss => sink_u32(1),
+            RayOutcome::Inside => sink_u32(2),
+        }
+        sink_u32(cast.iterations | (cast.status as u32) << 16);
+    }
+}
+
+/// Every shape kind, every query, through `&dyn SupportMap` (one copy of
+/// each query for all pairs, as a firmware with a shape enum would do).
+pub fn everything<R: Io>() {
+    let gjk = Gjk::<R>::new();
+    let (r1, r2, w, h, angle) = (
+        R::input(24),
+        R::input(25),
+        R::input(26),
+        R::input(27),
+        R::input(28),
+    );
+    let (
+        Some(p),
+        Ok(circle),
+        Ok(rect),
+        Ok(tri),
+        Ok(seg),
+        Ok(cap),
+        Ok(ell),
+        Ok(half),
+        Ok(slice),
+        Ok(round),
+    ) = (
+        polygons::<R>(),
+        Circle::at(vec::<R>(0), r1),
+        Rectangle::new(w, h),
+        Triangle::new(vec::<R>(0), vec::<R>(2), vec::<R>(4)),
+        Segment::new(vec::<R>(0), vec::<R>(4)),
+        Capsule::new(vec::<R>(0), vec::<R>(2), r2),
+        Ellipse::new(w, h),
+        HalfEllipse::new(w, h),
+        Slice::new(r1, angle),
+        Rectangle::new(w, h).and_then(|s| Rounded::new(s, r2)),
+    )
+    else {
+        sink_u32(0xdead);
+        return;
+    };
+    let shapes: [&dyn SupportMap<R>; 10] = [
+        &p.a, &circle, &rect, &tri, &seg, &cap, &ell, &half, &slice, &round,
+    ];
+    let Ok(tb) = Transform::new(vec::<R>(16), angle) else {
+        sink_u32(0xdead);
+        return;
+    };
+    let pick = |x: R| {
+        let (mut i, mut t) = (0usize, R::ONE);
+        while t <= x && i < 9 {
+            i += 1;
+            t += R::ONE;
+        }
+        shapes[i]
+    };
+    let (a, b) = (pick(R::input(30)), pick(R::input(31)));
+    intersects(&gjk, a, b, &tb);
+    distance(&gjk, a, b, &tb);
+    penetration(&gjk, a, b, &tb);
+    raycast(&gjk, b, &tb);
+}
