@@ -80,10 +80,12 @@ impl<R: Real, P> Gjk<R, P> {
         match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreProximity::Overlapping { simplex, iterations } => {
                 let mut points = [SupportPoint { point: R::vector(R::ZERO, R::ZERO), id: 0 }; 3];
+                let mut len = 0;
                 for (p, v) in points.iter_mut().zip(simplex.vertices()) {
                     *p = SupportPoint { point: v.w.to_glam(), id: v.id };
+                    len += 1;
                 }
-                let estimate = self.solver.solve(&pair, &points[..simplex.len]);
+                let estimate = self.solver.solve(&pair, points.get(..len).unwrap_or(&[]));
                 Some(Penetration {
                     normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
                     depth: estimate.depth + pair.radius,
@@ -95,7 +97,8 @@ impl<R: Real, P> Gjk<R, P> {
             CoreProximity::Separated(core) => {
                 // A closest point too small to give a direction is touching.
                 let fallback = pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO));
-                let (distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
+                let (distance, normal) =
+                    core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
                 let error_bound = (distance - core.lower_bound).max(R::ZERO);
                 let certain = core.status.is_converged() || core.lower_bound > pair.radius;
                 if distance > pair.radius && certain {

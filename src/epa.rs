@@ -9,7 +9,7 @@
 
 use crate::config::EpaConfig;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
-use crate::real::{Real, V2};
+use crate::real::{cyclic, Real, V2};
 use crate::result::Status;
 
 /// The depth and direction of the overlap of two cores, as a penetration
@@ -54,10 +54,10 @@ impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
 }
 
 /// A polytope vertex and the distance of the edge that starts at it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Corner<R> {
     w: V2<R>,
-    id: u64,
+    id: u32,
     /// Distance from the origin to the line of the edge to the next corner.
     edge_distance: R,
 }
@@ -81,10 +81,12 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
         self
     }
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
-        self.insert(index, c).is_ok()
+        index <= self.len() && self.insert(index, c).is_ok()
     }
     fn remove_at(&mut self, index: usize) {
-        self.remove(index);
+        if index < self.len() {
+            self.remove(index);
+        }
     }
     fn clear_all(&mut self) {
         self.clear()
@@ -100,11 +102,16 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
         self
     }
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
+        if index > self.len() {
+            return false;
+        }
         self.insert(index, c);
         true
     }
     fn remove_at(&mut self, index: usize) {
-        self.remove(index);
+        if index < self.len() {
+            self.remove(index);
+        }
     }
     fn clear_all(&mut self) {
         self.clear()
@@ -174,9 +181,10 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     }
     let n = polytope.items().len();
     for i in 0..n {
-        let q = polytope.items()[(i + 1) % n].w;
-        let c = &mut polytope.items_mut()[i];
-        c.edge_distance = edge(c.w, q).0;
+        let q = cyclic(polytope.items(), i + 1).w;
+        if let Some(c) = polytope.items_mut().get_mut(i) {
+            c.edge_distance = edge(c.w, q).0;
+        }
     }
 
     let mut upper = R::INFINITY;
@@ -184,15 +192,15 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     loop {
         let items = polytope.items();
         let n = items.len();
-        let (mut i, mut lower) = (0, items[0].edge_distance);
+        let (mut i, mut lower) = (0, cyclic(items, 0).edge_distance);
         for (k, c) in items.iter().enumerate().skip(1) {
             if c.edge_distance < lower {
                 i = k;
                 lower = c.edge_distance;
             }
         }
-        let j = (i + 1) % n;
-        let (p, q) = (items[i], items[j]);
+        let j = if i + 1 >= n { 0 } else { i + 1 };
+        let (p, q) = (cyclic(items, i), cyclic(items, j));
         let (_, normal) = edge(p.w, q.w);
         if iterations >= config.max_iterations() {
             return finish_curved(
@@ -239,7 +247,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             }
             continue;
         }
-        polytope.items_mut()[i].edge_distance = edge(p.w, w.w).0;
+        if let Some(c) = polytope.items_mut().get_mut(i) {
+            c.edge_distance = edge(p.w, w.w).0;
+        }
     }
 }
 
@@ -277,8 +287,12 @@ fn finish_curved<R: Real, S: Storage<R>>(
     if n < 3 || closest >= n {
         return fallback;
     }
-    let (prev, p, q, next) =
-        (items[(closest + n - 1) % n], items[closest], items[(closest + 1) % n], items[(closest + 2) % n]);
+    let (prev, p, q, next) = (
+        cyclic(items, closest + n - 1),
+        cyclic(items, closest),
+        cyclic(items, closest + 1),
+        cyclic(items, closest + 2),
+    );
     let (_, normal) = edge(p.w, q.w);
     if p.id != NO_ID && q.id != NO_ID {
         return fallback;
@@ -344,11 +358,11 @@ fn prune<R: Real, S: Storage<R>>(polytope: &mut S, closest: usize, upper: R) -> 
     let n = polytope.items().len();
     let mut farthest: Option<(usize, R)> = None;
     for k in 0..n {
-        if k == closest || k == (closest + 1) % n {
+        if k == closest || k == (closest + 1) % n.max(1) {
             continue;
         }
         let items = polytope.items();
-        let (prev, next) = (items[(k + n - 1) % n].w, items[(k + 1) % n].w);
+        let (prev, next) = (cyclic(items, k + n - 1).w, cyclic(items, k + 1).w);
         let chord = edge(prev, next).0;
         if chord >= upper && farthest.is_none_or(|(_, d)| chord > d) {
             farthest = Some((k, chord));
@@ -359,8 +373,10 @@ fn prune<R: Real, S: Storage<R>>(polytope: &mut S, closest: usize, upper: R) -> 
     };
     polytope.remove_at(k);
     let n = n - 1;
-    let before = (k + n - 1) % n;
-    polytope.items_mut()[before].edge_distance = chord;
+    let before = (k + n - 1) % n.max(1);
+    if let Some(c) = polytope.items_mut().get_mut(before) {
+        c.edge_distance = chord;
+    }
     true
 }
 
@@ -386,26 +402,29 @@ fn seed_from_edge<R: Real, S: Storage<R>>(
             k += 1;
         }
     }
-    let items = polytope.items();
-    if items.len() == 4 {
-        // Drop a side support that lies on the edge's line (zero area side).
-        let area_right = (b.w - a.w).cross(items[1].w - a.w);
-        let area_left = (b.w - a.w).cross(items[3].w - a.w);
-        if area_left <= R::ZERO {
-            polytope.remove_at(3);
+    match *polytope.items() {
+        [_, right, _, left] => {
+            // Drop a side support that lies on the edge's line (zero area side).
+            let area_right = (b.w - a.w).cross(right.w - a.w);
+            let area_left = (b.w - a.w).cross(left.w - a.w);
+            if area_left <= R::ZERO {
+                polytope.remove_at(3);
+            }
+            if area_right >= R::ZERO {
+                polytope.remove_at(1);
+            }
         }
-        if area_right >= R::ZERO {
-            polytope.remove_at(1);
+        [p0, p1, p2] => {
+            let area = (p1.w - p0.w).cross(p2.w - p0.w);
+            if area == R::ZERO {
+                polytope.remove_at(2);
+            } else if area < R::ZERO {
+                if let [_, x, y] = polytope.items_mut() {
+                    core::mem::swap(x, y);
+                }
+            }
         }
-    } else if items.len() == 3 {
-        let area = (items[1].w - items[0].w).cross(items[2].w - items[0].w);
-        if area == R::ZERO {
-            polytope.remove_at(2);
-        } else if area < R::ZERO {
-            let (x, y) = (items[1], items[2]);
-            polytope.items_mut()[1] = y;
-            polytope.items_mut()[2] = x;
-        }
+        _ => {}
     }
 }
 

@@ -7,26 +7,26 @@
 //! - a certified gap: `|v|` is an upper bound of the distance and
 //!   `w . v / |v|` a lower bound; stop when they are within
 //!   `epsilon * size` (curved cores);
-//! - no progress: `|v|` failed to shrink, so rounding has the last word;
+//! - no progress: `|v|` grew, so rounding has the last word;
 //! - the iteration limit, reported as such.
 
-use crate::minkowski::Pair;
+use crate::minkowski::{Pair, NO_ID};
 use crate::real::{Real, V2};
 use crate::result::Status;
 use crate::shape::SupportMap;
-use crate::simplex::{Closest, Simplex};
+use crate::simplex::{Closest, Simplex, Vertex, Witness};
 
 /// What GJK found out about the cores.
 pub(crate) enum CoreProximity<R: Real> {
     /// The cores overlap or touch; the simplex encloses (or touches) the
     /// origin, EPA's starting point.
-    Overlapping { simplex: Simplex<R>, iterations: u32 },
+    Overlapping { simplex: Simplex<R, Witness<R>>, iterations: u32 },
     /// The cores are apart: closest point `v` of the Minkowski difference.
     Separated(CoreSeparation<R>),
 }
 
 pub(crate) struct CoreSeparation<R: Real> {
-    pub simplex: Simplex<R>,
+    pub simplex: Simplex<R, Witness<R>>,
     pub v: V2<R>,
     /// The largest certified lower bound of the core distance seen.
     pub lower_bound: R,
@@ -44,6 +44,12 @@ fn first_direction<R: Real>(centers: V2<R>) -> V2<R> {
     }
 }
 
+/// Whether `id` is a vertex (not a curve point) among `ids`.
+#[inline(always)]
+fn repeats(ids: &[u32; 3], id: u32) -> bool {
+    id != NO_ID && ids.contains(&id)
+}
+
 /// Distance between the cores (radii not included).
 pub(crate) fn core_distance<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreProximity<R>
 where
@@ -52,12 +58,14 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let tolerance = epsilon * pair.scale;
-    let mut simplex = Simplex::new(pair.support(first_direction(pair.centers)));
+    let mut simplex = Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
     let mut lower_bound = R::ZERO;
-    let mut previous: Option<(Simplex<R>, V2<R>, R)> = None;
+    let mut previous = R::INFINITY;
     let mut iterations = 1;
     loop {
-        let before = simplex;
+        // Ids before the reduction: a vertex dropped now and found again next
+        // is a repeat too (Box2D compares with the saved vertices likewise).
+        let before = simplex.ids();
         let v = match simplex.solve() {
             Closest::Enclosed => return CoreProximity::Overlapping { simplex, iterations },
             Closest::Point(v) => v,
@@ -66,16 +74,15 @@ where
         if vv == R::ZERO {
             return CoreProximity::Overlapping { simplex, iterations };
         }
-        if let Some((s, pv, pvv)) = previous {
-            if vv > pvv {
-                // Rounding made |v| grow: the previous simplex was as close as
-                // it gets. (A tie is not a stall: near a vertex a segment can
-                // turn the direction a lot while |v| moves less than an ulp; the
-                // next support then repeats a vertex and ends the loop exactly.)
-                return separated(s, pv, lower_bound, iterations, Status::Converged);
-            }
+        // |v| grew: only rounding can do that, and the simplex is as close as
+        // it gets (within rounding of the previous one). A tie is not a stall:
+        // near a vertex a segment can turn the direction a lot while |v| moves
+        // less than an ulp; the next support then repeats a vertex.
+        let stalled = vv > previous;
+        previous = vv;
+        if stalled {
+            return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
-        previous = Some((simplex, v, vv));
         if iterations >= max_iterations {
             return separated(simplex, v, lower_bound, iterations, Status::IterationLimit);
         }
@@ -86,15 +93,15 @@ where
         // The gap test needs a positive lower bound: with none, the support
         // plane does not separate the origin, which may well be inside.
         let gap_closed = lower_bound > R::ZERO && length - lower_bound <= tolerance;
-        if before.contains_id(w.id) || simplex.contains_id(w.id) || gap_closed {
+        if repeats(&before, w.id) || repeats(&simplex.ids(), w.id) || gap_closed {
             return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
-        simplex.push(w);
+        simplex.push(Vertex::from_minkowski(&w));
     }
 }
 
 fn separated<R: Real>(
-    simplex: Simplex<R>,
+    simplex: Simplex<R, Witness<R>>,
     v: V2<R>,
     lower_bound: R,
     iterations: u32,
@@ -120,11 +127,12 @@ where
     let reach = pair.radius + margin;
     let reach2 = reach * reach;
     let tolerance = epsilon * pair.scale;
-    let mut simplex = Simplex::new(pair.support(first_direction(pair.centers)));
-    let mut previous_vv = R::INFINITY;
+    let mut simplex: Simplex<R, ()> =
+        Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
+    let mut previous = R::INFINITY;
     let mut iterations = 1;
     loop {
-        let before = simplex;
+        let before = simplex.ids();
         let v = match simplex.solve() {
             Closest::Enclosed => return (true, iterations, Status::Converged),
             Closest::Point(v) => v,
@@ -134,10 +142,10 @@ where
         if vv <= reach2 {
             return (true, iterations, Status::Converged);
         }
-        if vv >= previous_vv {
+        if vv > previous {
             return (false, iterations, Status::Converged);
         }
-        previous_vv = vv;
+        previous = vv;
         if iterations >= max_iterations {
             return (false, iterations, Status::IterationLimit);
         }
@@ -149,12 +157,12 @@ where
         if vw > R::ZERO && vw * vw > reach2 * vv {
             return (false, iterations, Status::Converged);
         }
-        if before.contains_id(w.id) || simplex.contains_id(w.id) {
+        if repeats(&before, w.id) || repeats(&simplex.ids(), w.id) {
             return (false, iterations, Status::Converged);
         }
-        if w.id == crate::minkowski::NO_ID && vw > R::ZERO && vv - vw <= tolerance * vv.sqrt() {
+        if w.id == NO_ID && vw > R::ZERO && vv - vw <= tolerance * vv.sqrt() {
             return (false, iterations, Status::Converged);
         }
-        simplex.push(w);
+        simplex.push(Vertex::from_minkowski(&w));
     }
 }

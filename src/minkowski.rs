@@ -4,12 +4,14 @@
 //! not of their position.
 
 use crate::real::{Real, V2};
-use crate::shape::{SupportMap, NO_FEATURE};
+use crate::shape::SupportMap;
 use crate::transform::Transform;
 
-/// Feature id of a Minkowski vertex: both shapes' vertex ids, or [`NO_ID`]
-/// when either support point lies on a curve.
-pub const NO_ID: u64 = u64::MAX;
+/// Feature id of a Minkowski vertex: both shapes' vertex ids packed in 16
+/// bits each, or [`NO_ID`] when either support point lies on a curve (or a
+/// polygon has more than 65535 vertices, where exact termination gives way to
+/// the tolerance).
+pub const NO_ID: u32 = u32::MAX;
 
 /// A point of the Minkowski difference with the shape points it came from.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -18,7 +20,7 @@ pub(crate) struct MinkowskiVertex<R> {
     pub w: V2<R>,
     pub a: V2<R>,
     pub b: V2<R>,
-    pub id: u64,
+    pub id: u32,
 }
 
 /// A support point of a Minkowski difference, as pluggable penetration
@@ -28,7 +30,7 @@ pub struct SupportPoint<R: Real> {
     pub point: R::Vector,
     /// Identifies the pair of shape vertices; [`NO_ID`] on curves. Equal ids
     /// mean the same point, so a solver can stop exactly.
-    pub id: u64,
+    pub id: u32,
 }
 
 /// The Minkowski difference of the cores of two shapes (B - A), in the
@@ -119,7 +121,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam());
         let a = V2::from_glam(a);
         let b = self.rotate(V2::from_glam(b)) + self.offset;
-        let id = if ia == NO_FEATURE || ib == NO_FEATURE { NO_ID } else { ((ia as u64) << 32) | ib as u64 };
+        // NO_FEATURE (u32::MAX) and vertex indices past 16 bits both land here.
+        let id = if ia >= 0xFFFF || ib >= 0xFFFF { NO_ID } else { (ia << 16) | ib };
         MinkowskiVertex { w: b - a, a, b, id }
     }
 

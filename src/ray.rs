@@ -2,10 +2,11 @@
 //! (exact face normals, no iteration), and GJK ray casting (conservative
 //! advancement, van den Bergen 2004) for every other support map.
 
+use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
 use crate::result::{RayCast, RayHit, RayOutcome, Status};
 use crate::shape::SupportMap;
-use crate::simplex::{Closest, Simplex};
+use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
 use crate::Error;
 
@@ -56,10 +57,8 @@ fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
 pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let (mut lower, mut upper) = (R::ZERO, max);
     let mut entered: Option<V2<R>> = None;
-    let n = vertices.len();
-    for i in 0..n {
-        let a = vertices[i];
-        let normal = (vertices[if i + 1 == n { 0 } else { i + 1 }] - a).perp_cw();
+    for (&a, &b) in vertices.iter().zip(vertices.iter().cycle().skip(1)) {
+        let normal = (b - a).perp_cw();
         // Positive when the origin is on the inner side of this edge.
         let numerator = normal.dot(a - o);
         let denominator = normal.dot(d);
@@ -257,15 +256,16 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
             x = o + d * lambda;
             normal = v;
         }
-        if len == 3 {
-            len = 2;
+        // Keep at most two earlier points (the reduced simplex) and add p.
+        let keep = len.min(2);
+        if let Some(slot) = points.get_mut(keep) {
+            *slot = p;
         }
-        points[len] = p;
-        len += 1;
+        len = keep + 1;
         // Closest point of conv{x - p_i} to the origin, reducing the set.
-        let mut simplex = Simplex::new(vertex(x - points[0], points[0]));
-        for &q in &points[1..len] {
-            simplex.push(vertex(x - q, q));
+        let mut simplex: Simplex<R, Witness<R>> = Simplex::new(vertex(x, points[0]));
+        for &q in points.iter().take(len).skip(1) {
+            simplex.push(vertex(x, q));
         }
         match simplex.solve() {
             Closest::Enclosed => {
@@ -273,9 +273,10 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
             }
             Closest::Point(closest) => {
                 v = closest;
-                len = simplex.len;
-                for (k, s) in simplex.vertices().iter().enumerate() {
-                    points[k] = s.b;
+                len = 0;
+                for (slot, q) in points.iter_mut().zip(simplex.shape_points()) {
+                    *slot = q;
+                    len += 1;
                 }
             }
         }
@@ -285,6 +286,8 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     RayCast { outcome, iterations, status }
 }
 
-fn vertex<R: Real>(w: V2<R>, p: V2<R>) -> crate::minkowski::MinkowskiVertex<R> {
-    crate::minkowski::MinkowskiVertex { w, a: V2::zero(), b: p, id: crate::minkowski::NO_ID }
+/// A simplex vertex for the ray cast: the ray point minus a shape point,
+/// which it keeps (as `b`) because the ray point moves.
+fn vertex<R: Real>(x: V2<R>, p: V2<R>) -> Vertex<R, Witness<R>> {
+    Vertex { w: x - p, id: NO_ID, payload: Witness { a: V2::zero(), b: p } }
 }

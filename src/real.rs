@@ -59,9 +59,11 @@ pub trait Real:
     fn cos(self) -> Self;
     fn atan2(self, x: Self) -> Self;
     fn is_finite(self) -> bool;
-    /// `self * a + b` with one rounding; used where a cancellation would lose
-    /// the bits that matter (exact orientation predicates).
-    fn mul_add(self, a: Self, b: Self) -> Self;
+    /// Veltkamp's splitter, `2^ceil(p/2) + 1` for a `p`-bit significand: splits
+    /// a value into two halves whose products are exact (Dekker's
+    /// two-product), so exact predicates need no fma. An fma is software on
+    /// Cortex-M4F for f32 (libm's fmaf goes through soft f64) and costs kilobytes.
+    const SPLITTER: Self;
 
     fn vector(x: Self, y: Self) -> Self::Vector;
     fn components(v: Self::Vector) -> (Self, Self);
@@ -85,7 +87,7 @@ pub trait Real:
 }
 
 macro_rules! impl_real {
-    ($t:ty, $vec:ty, $sqrt:path, $sin:path, $cos:path, $atan2:path, $fma:path, $max_coord:expr) => {
+    ($t:ty, $vec:ty, $sqrt:path, $sin:path, $cos:path, $atan2:path, $splitter:expr, $max_coord:expr) => {
         impl Real for $t {
             type Vector = $vec;
             const ZERO: Self = 0.0;
@@ -95,6 +97,7 @@ macro_rules! impl_real {
             const EPSILON: Self = <$t>::EPSILON;
             const INFINITY: Self = <$t>::INFINITY;
             const MAX_COORDINATE: Self = $max_coord;
+            const SPLITTER: Self = $splitter;
 
             #[inline(always)]
             fn from_f64(value: f64) -> Self {
@@ -133,10 +136,6 @@ macro_rules! impl_real {
                 <$t>::is_finite(self)
             }
             #[inline(always)]
-            fn mul_add(self, a: Self, b: Self) -> Self {
-                $fma(self, a, b)
-            }
-            #[inline(always)]
             fn vector(x: Self, y: Self) -> Self::Vector {
                 <$vec>::new(x, y)
             }
@@ -148,8 +147,8 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(f32, glam::Vec2, libm::sqrtf, libm::sinf, libm::cosf, libm::atan2f, libm::fmaf, 1.0e15);
-impl_real!(f64, glam::DVec2, libm::sqrt, libm::sin, libm::cos, libm::atan2, libm::fma, 1.0e150);
+impl_real!(f32, glam::Vec2, libm::sqrtf, libm::sinf, libm::cosf, libm::atan2f, 4097.0, 1.0e15);
+impl_real!(f64, glam::DVec2, libm::sqrt, libm::sin, libm::cos, libm::atan2, 134_217_729.0, 1.0e150);
 
 /// The internal 2D vector, generic over the scalar.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -256,7 +255,7 @@ impl<R: Real> Mul<R> for V2<R> {
 
 /// `cross(b - a, c - a)` with its sign right far beyond what the plain formula
 /// gives: positive when `a, b, c` turn counter-clockwise. The differences and
-/// products are expanded error-free (TwoDiff, fma), so only the final sums round,
+/// products are expanded error-free (TwoDiff, Dekker's TwoProduct), so only the final sums round,
 /// and those are tiny next to any value they could flip. Used where a sign
 /// decides a verdict (convexity of user polygons), never in hot loops.
 pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
@@ -264,10 +263,8 @@ pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
     let (aby, aby_e) = two_diff(b.y, a.y);
     let (acx, acx_e) = two_diff(c.x, a.x);
     let (acy, acy_e) = two_diff(c.y, a.y);
-    let p = abx * acy;
-    let p_e = abx.mul_add(acy, -p);
-    let q = aby * acx;
-    let q_e = aby.mul_add(acx, -q);
+    let (p, p_e) = two_product(abx, acy);
+    let (q, q_e) = two_product(aby, acx);
     // Main term and its error, then the cross terms from the difference errors.
     let main = p - q;
     let tail =
@@ -276,6 +273,26 @@ pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
     // comes from the tail of rounding errors, which is itself computed
     // almost exactly.
     main + tail
+}
+
+/// Dekker's TwoProduct: `hi + lo == a * b` exactly (no overflow assumed:
+/// coordinates are bounded by `MAX_COORDINATE`).
+#[inline]
+fn two_product<R: Real>(a: R, b: R) -> (R, R) {
+    let hi = a * b;
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    let lo = ((ah * bh - hi) + ah * bl + al * bh) + al * bl;
+    (hi, lo)
+}
+
+/// Veltkamp's split: `a == hi + lo` with both halves of at most half the
+/// significand's bits.
+#[inline]
+fn split<R: Real>(a: R) -> (R, R) {
+    let c = R::SPLITTER * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
 }
 
 /// Whether `a - b` is representable exactly (so shifting by `b` loses nothing).
@@ -291,4 +308,16 @@ fn two_diff<R: Real>(a: R, b: R) -> (R, R) {
     let av = hi + bv;
     let lo = (a - av) + (bv - b);
     (hi, lo)
+}
+
+/// `items[i % len]`, and `T::default()` for an empty slice: cyclic access to
+/// polygon and polytope vertices that can never panic (the callers' indices
+/// are in range; this keeps bounds checks and divisions by zero provably out
+/// of the code, which the firmware's no-panic link check verifies).
+#[inline(always)]
+pub(crate) fn cyclic<T: Copy + Default>(items: &[T], i: usize) -> T {
+    match items.len() {
+        0 => T::default(),
+        n => items.get(i % n).copied().unwrap_or_default(),
+    }
 }

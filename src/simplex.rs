@@ -5,16 +5,59 @@
 //! an edge, `v = n (n . w1) / (n . n)` with `n` perpendicular to the edge, so
 //! `v` is exactly normal to the edge's direction and no `w1 + t (w2 - w1)`
 //! cancellation is spent on it.
+//!
+//! The simplex is generic over what each vertex carries besides its point
+//! and id: the intersection test carries nothing (`()`), the distance query
+//! the shape points it needs for closest points ([`Witness`]). The test's
+//! simplex stays small, which is what its speed and stack depth come from.
 
-use crate::minkowski::MinkowskiVertex;
+use crate::minkowski::{MinkowskiVertex, NO_ID};
 use crate::real::{Real, V2};
 
+/// What a simplex vertex carries besides its Minkowski point.
+pub(crate) trait Payload<R>: Copy {
+    fn from_vertex(v: &MinkowskiVertex<R>) -> Self;
+}
+
+impl<R> Payload<R> for () {
+    #[inline(always)]
+    fn from_vertex(_: &MinkowskiVertex<R>) -> Self {}
+}
+
+/// The shape points a Minkowski point is the difference of.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Witness<R> {
+    pub a: V2<R>,
+    pub b: V2<R>,
+}
+
+impl<R: Copy> Payload<R> for Witness<R> {
+    #[inline(always)]
+    fn from_vertex(v: &MinkowskiVertex<R>) -> Self {
+        Witness { a: v.a, b: v.b }
+    }
+}
+
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Simplex<R: Real> {
-    pub verts: [MinkowskiVertex<R>; 3],
+pub(crate) struct Vertex<R, P> {
+    pub w: V2<R>,
+    pub id: u32,
+    pub payload: P,
+}
+
+impl<R: Real, P: Payload<R>> Vertex<R, P> {
+    #[inline(always)]
+    pub fn from_minkowski(v: &MinkowskiVertex<R>) -> Self {
+        Self { w: v.w, id: v.id, payload: P::from_vertex(v) }
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Simplex<R, P> {
+    verts: [Vertex<R, P>; 3],
     /// Barycentric weights of the closest point.
-    pub weights: [R; 3],
-    pub len: usize,
+    weights: [R; 3],
+    len: usize,
 }
 
 /// Where the origin is relative to the simplex.
@@ -25,50 +68,60 @@ pub(crate) enum Closest<R> {
     Enclosed,
 }
 
-impl<R: Real> Simplex<R> {
-    pub fn new(first: MinkowskiVertex<R>) -> Self {
+impl<R: Real, P: Payload<R>> Simplex<R, P> {
+    pub fn new(first: Vertex<R, P>) -> Self {
         Self { verts: [first; 3], weights: [R::ONE, R::ZERO, R::ZERO], len: 1 }
     }
 
-    pub fn vertices(&self) -> &[MinkowskiVertex<R>] {
-        &self.verts[..self.len]
+    pub fn vertices(&self) -> impl Iterator<Item = &Vertex<R, P>> {
+        self.verts.iter().take(self.len)
     }
 
-    /// Appends a vertex; the caller keeps `len < 3` before it.
-    pub fn push(&mut self, v: MinkowskiVertex<R>) {
-        self.verts[self.len] = v;
-        self.len += 1;
+    /// The ids of the vertices, [`NO_ID`] for empty slots: what the loops
+    /// compare new supports against.
+    pub fn ids(&self) -> [u32; 3] {
+        let mut ids = [NO_ID; 3];
+        for (slot, v) in ids.iter_mut().zip(self.vertices()) {
+            *slot = v.id;
+        }
+        ids
     }
 
-    /// Whether a vertex with this (non-curve) id is in the simplex.
-    pub fn contains_id(&self, id: u64) -> bool {
-        id != crate::minkowski::NO_ID && self.vertices().iter().any(|v| v.id == id)
+    /// Appends a vertex; a full simplex (which the loops never push to)
+    /// replaces its last one.
+    pub fn push(&mut self, v: Vertex<R, P>) {
+        let i = self.len.min(2);
+        if let Some(slot) = self.verts.get_mut(i) {
+            *slot = v;
+        }
+        self.len = i + 1;
     }
 
     /// Reduces the simplex to the smallest face holding the closest point to
     /// the origin, and returns that point.
+    #[inline]
     pub fn solve(&mut self) -> Closest<R> {
+        let [a, b, c] = self.verts;
         match self.len {
-            1 => {
-                self.weights[0] = R::ONE;
-                Closest::Point(self.verts[0].w)
-            }
             2 => {
-                let (s, v) = solve_segment(self.verts[0], self.verts[1]);
+                let (s, v) = solve_segment(a, b);
                 *self = s;
                 Closest::Point(v)
             }
-            _ => self.solve_triangle(),
+            3 => self.solve_triangle(a, b, c),
+            _ => {
+                self.weights = [R::ONE, R::ZERO, R::ZERO];
+                Closest::Point(a.w)
+            }
         }
     }
 
-    fn solve_triangle(&mut self) -> Closest<R> {
-        let [a, b, c] = self.verts;
+    fn solve_triangle(&mut self, a: Vertex<R, P>, b: Vertex<R, P>, c: Vertex<R, P>) -> Closest<R> {
         let (wa, wb, wc) = (a.w, b.w, c.w);
         let area = (wb - wa).cross(wc - wa);
         // The origin is on the inner side of edge i->j when cross(wi, wj)
         // has the sign of the area (zero counts as inside: touching).
-        let edges = [(a, b, wa.cross(wb)), (b, c, wb.cross(wc)), (c, a, wc.cross(wa))];
+        let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
         let outside = |side: R| {
             if area > R::ZERO {
                 side < R::ZERO
@@ -78,57 +131,69 @@ impl<R: Real> Simplex<R> {
                 true
             }
         };
-        if area != R::ZERO && !edges.iter().any(|e| outside(e.2)) {
+        if area != R::ZERO && !sides.iter().any(|&s| outside(s)) {
             return Closest::Enclosed;
         }
         // The closest point lies on an edge the origin is outside of; a
         // degenerate (flat) triangle tries all three.
-        let mut best: Option<(Simplex<R>, V2<R>, R)> = None;
-        for &(p, q, side) in edges.iter() {
-            if !outside(side) {
-                continue;
-            }
-            let (s, v) = solve_segment(p, q);
-            let vv = v.length_squared();
-            if best.as_ref().is_none_or(|b| vv < b.2) {
-                best = Some((s, v, vv));
+        let edges = [(a, b), (b, c), (c, a)];
+        let mut best: Option<(usize, R)> = None;
+        for (k, (&(p, q), &side)) in edges.iter().zip(sides.iter()).enumerate() {
+            if outside(side) {
+                let vv = closest_on_segment(p.w, q.w).length_squared();
+                if best.is_none_or(|(_, b)| vv < b) {
+                    best = Some((k, vv));
+                }
             }
         }
-        match best {
-            Some((s, v, _)) => {
-                *self = s;
-                Closest::Point(v)
-            }
-            None => Closest::Enclosed,
-        }
+        let Some((k, _)) = best else {
+            return Closest::Enclosed;
+        };
+        let (p, q) = match k {
+            0 => (a, b),
+            1 => (b, c),
+            _ => (c, a),
+        };
+        let (s, v) = solve_segment(p, q);
+        *self = s;
+        Closest::Point(v)
     }
+}
 
+impl<R: Real> Simplex<R, Witness<R>> {
     /// The closest point's pre-images on A and B (pair frame).
     pub fn witness_points(&self) -> (V2<R>, V2<R>) {
         let mut pa = V2::zero();
         let mut pb = V2::zero();
-        for (v, &w) in self.vertices().iter().zip(self.weights.iter()) {
-            pa = pa + v.a * w;
-            pb = pb + v.b * w;
+        for (v, &w) in self.vertices().zip(self.weights.iter()) {
+            pa = pa + v.payload.a * w;
+            pb = pb + v.payload.b * w;
         }
         (pa, pb)
     }
 
+    /// The shape points of the vertices (the GJK ray cast keeps them).
+    pub fn shape_points(&self) -> impl Iterator<Item = V2<R>> + '_ {
+        self.vertices().map(|v| v.payload.b)
+    }
+}
+
+impl<R: Real, P> Simplex<R, P> {
     /// Distance from the origin to the simplex's closest point and the unit
     /// normal towards it, in the most precise form for the face it lies on.
     /// `toward` (B's center minus A's) orients the normal when the distance
     /// rounds to exactly zero and the edge alone cannot tell its side.
     pub fn distance_and_normal(&self, v: V2<R>, toward: V2<R>) -> Option<(R, V2<R>)> {
         if self.len == 2 {
-            let (w1, w2) = (self.verts[0].w, self.verts[1].w);
-            let n = (w2 - w1).perp();
+            let [p, q, _] = &self.verts;
+            let n = (q.w - p.w).perp();
             let len = n.length();
             if len > R::ZERO {
                 // Divided componentwise, an axis-aligned normal comes out as
                 // exactly (0, +-1) or (+-1, 0), so axis-aligned contacts give
                 // exact distances (a touching pair gives exactly 0).
                 let unit = V2::new(n.x / len, n.y / len);
-                let signed = unit.dot(w1);
+                let signed = unit.dot(p.w);
                 let outward = signed > R::ZERO || (signed == R::ZERO && unit.dot(toward) >= R::ZERO);
                 return if outward { Some((signed, unit)) } else { Some((-signed, -unit)) };
             }
@@ -142,9 +207,28 @@ impl<R: Real> Simplex<R> {
     }
 }
 
+/// Closest point of the segment `p`-`q` to the origin (no reduction).
+#[inline]
+fn closest_on_segment<R: Real>(p: V2<R>, q: V2<R>) -> V2<R> {
+    let e = q - p;
+    if p.dot(e) >= R::ZERO {
+        return p;
+    }
+    if q.dot(e) <= R::ZERO {
+        return q;
+    }
+    let n = e.perp();
+    let nn = n.length_squared();
+    if nn <= R::ZERO {
+        return if p.length_squared() <= q.length_squared() { p } else { q };
+    }
+    n * (n.dot(p) / nn)
+}
+
 /// Closest point of segment `p`-`q` to the origin, with the segment reduced
 /// to the vertex or edge holding it.
-fn solve_segment<R: Real>(p: MinkowskiVertex<R>, q: MinkowskiVertex<R>) -> (Simplex<R>, V2<R>) {
+#[inline]
+fn solve_segment<R: Real, P: Payload<R>>(p: Vertex<R, P>, q: Vertex<R, P>) -> (Simplex<R, P>, V2<R>) {
     let e = q.w - p.w;
     let toward_q = -p.w.dot(e);
     let toward_p = q.w.dot(e);

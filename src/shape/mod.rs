@@ -110,24 +110,35 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
 }
 
-/// Support of a polytope core given as a vertex slice: a linear scan for few
-/// vertices, an O(log n) search over edge directions for many.
-pub(crate) fn polytope_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
+/// Support of a polytope core given as a vertex slice, as (index, vertex):
+/// a linear scan for up to 24 vertices, an O(log n) search over edge
+/// directions beyond. `N` is the capacity: for small ones the search is not
+/// even compiled in. No indexing can panic: an empty slice gives vertex 0 at
+/// the origin.
+#[inline]
+pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
     const LINEAR_SCAN_MAX: usize = 24;
-    let n = vertices.len();
-    if n <= LINEAR_SCAN_MAX {
-        let mut best = 0;
-        let mut best_dot = vertices[0].dot(d);
-        for (i, v) in vertices.iter().enumerate().skip(1) {
-            let dot = v.dot(d);
-            if dot > best_dot {
-                best = i;
-                best_dot = dot;
-            }
-        }
-        return best;
+    if N > LINEAR_SCAN_MAX && vertices.len() > LINEAR_SCAN_MAX {
+        let k = hill_climb(vertices, d, angular_search(vertices, d));
+        return (k, at(vertices, k));
     }
-    hill_climb(vertices, d, angular_search(vertices, d))
+    let mut best = (0, V2::zero());
+    let mut best_dot = -R::INFINITY;
+    for (i, &v) in vertices.iter().enumerate() {
+        let dot = v.dot(d);
+        if dot > best_dot {
+            best = (i, v);
+            best_dot = dot;
+        }
+    }
+    best
+}
+
+/// Vertex `i`, or the origin out of range (never the case for the callers,
+/// whose indices stay below the length; this keeps panics out of the code).
+#[inline(always)]
+fn at<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
+    vertices.get(i).copied().unwrap_or_default()
 }
 
 /// The support vertex is the start of the first edge whose direction, going
@@ -137,7 +148,7 @@ pub(crate) fn polytope_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
 /// the comparison wrong for nearly parallel edges; the hill climb mends that.
 fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
     let n = vertices.len();
-    let edge = |i: usize| vertices[if i + 1 == n { 0 } else { i + 1 }] - vertices[i];
+    let edge = |i: usize| at(vertices, if i + 1 >= n { 0 } else { i + 1 }) - at(vertices, i);
     let e0 = edge(0);
     let tangent = d.perp();
     // Half-turn index of u relative to e0: 0 for [0, pi), 1 for [pi, 2 pi).
@@ -145,13 +156,7 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
         let c = e0.cross(u);
         !(c > R::ZERO || (c == R::ZERO && e0.dot(u) > R::ZERO))
     };
-    let angle_less = |u: V2<R>, hu: bool, w: V2<R>, hw: bool| {
-        if hu != hw {
-            !hu
-        } else {
-            u.cross(w) > R::ZERO
-        }
-    };
+    let angle_less = |u: V2<R>, hu: bool, w: V2<R>, hw: bool| if hu != hw { !hu } else { u.cross(w) > R::ZERO };
     let ht = half(tangent);
     // Find the first edge k with angle(e_k) >= angle(tangent); edges 1..n.
     let (mut lo, mut hi) = (1usize, n);
@@ -164,7 +169,7 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
             hi = mid;
         }
     }
-    if lo == n {
+    if lo >= n {
         0
     } else {
         lo
@@ -175,12 +180,15 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
 /// Strictly increasing values cannot cycle, and the walk is capped at n steps.
 fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize) -> usize {
     let n = vertices.len();
-    let mut k = start;
-    let mut best = vertices[k].dot(d);
+    if n == 0 {
+        return 0;
+    }
+    let mut k = start.min(n - 1);
+    let mut best = at(vertices, k).dot(d);
     for _ in 0..n {
-        let next = if k + 1 == n { 0 } else { k + 1 };
+        let next = if k + 1 >= n { 0 } else { k + 1 };
         let prev = if k == 0 { n - 1 } else { k - 1 };
-        let (dn, dp) = (vertices[next].dot(d), vertices[prev].dot(d));
+        let (dn, dp) = (at(vertices, next).dot(d), at(vertices, prev).dot(d));
         if dn > best && dn >= dp {
             k = next;
             best = dn;

@@ -1,6 +1,6 @@
 use super::{polytope_support, SupportMap};
 use crate::ray::{cast_ray_polygon, LocalRayCast};
-use crate::real::{orientation, Real, V2};
+use crate::real::{cyclic, orientation, Real, V2};
 use crate::transform::check_point;
 use crate::Error;
 use heapless::Vec;
@@ -38,7 +38,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         }
         let n = world.len();
         for i in 0..n {
-            if world[i] == world[(i + 1) % n] {
+            if cyclic(&world, i) == cyclic(&world, i + 1) {
                 return Err(Error::DuplicateVertex);
             }
         }
@@ -100,7 +100,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
 /// position's. Near the origin, the origin itself: the coordinates as given
 /// are exact already, and a shift would round them.
 pub(crate) fn choose_reference<R: Real>(points: &[V2<R>]) -> V2<R> {
-    let first = points[0];
+    let first = cyclic(points, 0);
     let exact = points
         .iter()
         .all(|&p| crate::real::is_exact_difference(p.x, first.x) && crate::real::is_exact_difference(p.y, first.y));
@@ -123,7 +123,7 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
     let n = p.len();
     let (mut left, mut right) = (false, false);
     for i in 0..n {
-        let turn = orientation(p[i], p[(i + 1) % n], p[(i + 2) % n]);
+        let turn = orientation(cyclic(p, i), cyclic(p, i + 1), cyclic(p, i + 2));
         left |= turn > R::ZERO;
         right |= turn < R::ZERO;
     }
@@ -137,7 +137,7 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
         let mut changes = 0;
         let mut last = R::ZERO;
         for i in 0..=n {
-            let e = p[(i + 1) % n] - p[i % n];
+            let e = cyclic(p, i + 1) - cyclic(p, i);
             let c = component(e);
             if c != R::ZERO {
                 if last != R::ZERO && (c > R::ZERO) != (last > R::ZERO) {
@@ -158,11 +158,11 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
 /// coordinates relative to it, so the triangles' areas and centers lose
 /// nothing to a far-away origin.
 pub(crate) fn area_centroid<R: Real>(v: &[V2<R>]) -> V2<R> {
-    let origin = v[0];
+    let origin = cyclic(v, 0);
     let mut area2 = R::ZERO;
     let mut acc = V2::zero();
-    for i in 1..v.len() - 1 {
-        let (p, q) = (v[i] - origin, v[i + 1] - origin);
+    for (&p, &q) in v.iter().zip(v.iter().skip(1)).skip(1) {
+        let (p, q) = (p - origin, q - origin);
         let a = p.cross(q);
         area2 += a;
         acc = acc + (p + q) * a;
@@ -186,8 +186,8 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     #[inline]
     fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
-        let i = polytope_support(&self.vertices, V2::from_glam(direction));
-        (self.vertices[i].to_glam(), i as u32)
+        let (i, v) = polytope_support::<R, N>(&self.vertices, V2::from_glam(direction));
+        (v.to_glam(), i as u32)
     }
     fn center(&self) -> R::Vector {
         self.center.to_glam()
