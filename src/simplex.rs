@@ -98,26 +98,22 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     }
 
     /// Reduces the simplex to the smallest face holding the closest point to
-    /// the origin, and returns that point.
+    /// the origin, and returns that point. Works in place, by index: no
+    /// vertex is copied more than once (stack depth on microcontrollers).
     #[inline]
     pub fn solve(&mut self) -> Closest<R> {
-        let [a, b, c] = self.verts;
         match self.len {
-            2 => {
-                let (s, v) = solve_segment(a, b);
-                *self = s;
-                Closest::Point(v)
-            }
-            3 => self.solve_triangle(a, b, c),
+            2 => Closest::Point(self.reduce_to_segment(0, 1)),
+            3 => self.solve_triangle(),
             _ => {
                 self.weights = [R::ONE, R::ZERO, R::ZERO];
-                Closest::Point(a.w)
+                Closest::Point(self.verts[0].w)
             }
         }
     }
 
-    fn solve_triangle(&mut self, a: Vertex<R, P>, b: Vertex<R, P>, c: Vertex<R, P>) -> Closest<R> {
-        let (wa, wb, wc) = (a.w, b.w, c.w);
+    fn solve_triangle(&mut self) -> Closest<R> {
+        let [wa, wb, wc] = [self.verts[0].w, self.verts[1].w, self.verts[2].w];
         let area = (wb - wa).cross(wc - wa);
         // The origin is on the inner side of edge i->j when cross(wi, wj)
         // has the sign of the area (zero counts as inside: touching).
@@ -136,27 +132,57 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         }
         // The closest point lies on an edge the origin is outside of; a
         // degenerate (flat) triangle tries all three.
-        let edges = [(a, b), (b, c), (c, a)];
-        let mut best: Option<(usize, R)> = None;
-        for (k, (&(p, q), &side)) in edges.iter().zip(sides.iter()).enumerate() {
+        const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
+        let ws = [wa, wb, wc];
+        let mut best: Option<((usize, usize), R)> = None;
+        for (&(i, j), &side) in EDGES.iter().zip(sides.iter()) {
             if outside(side) {
-                let vv = closest_on_segment(p.w, q.w).length_squared();
+                let vv = closest_on_segment(ws[i], ws[j]).length_squared();
                 if best.is_none_or(|(_, b)| vv < b) {
-                    best = Some((k, vv));
+                    best = Some(((i, j), vv));
                 }
             }
         }
-        let Some((k, _)) = best else {
-            return Closest::Enclosed;
-        };
-        let (p, q) = match k {
-            0 => (a, b),
-            1 => (b, c),
-            _ => (c, a),
-        };
-        let (s, v) = solve_segment(p, q);
-        *self = s;
-        Closest::Point(v)
+        match best {
+            Some(((i, j), _)) => Closest::Point(self.reduce_to_segment(i, j)),
+            None => Closest::Enclosed,
+        }
+    }
+
+    /// Reduces to the vertex or edge of `verts[i]`-`verts[j]` holding the
+    /// closest point to the origin, and returns that point.
+    fn reduce_to_segment(&mut self, i: usize, j: usize) -> V2<R> {
+        // Always 0..=2; the clamp lets the compiler see it (no bounds check).
+        let (i, j) = (i.min(2), j.min(2));
+        let (p, q) = (self.verts[i].w, self.verts[j].w);
+        let e = q - p;
+        let toward_q = -p.dot(e);
+        let toward_p = q.dot(e);
+        let n = e.perp();
+        let nn = n.length_squared();
+        // An edge so short its squared length underflows keeps the nearer end.
+        let degenerate = nn <= R::ZERO;
+        if toward_q <= R::ZERO || (degenerate && p.length_squared() <= q.length_squared()) {
+            self.keep_one(i);
+            return p;
+        }
+        if toward_p <= R::ZERO || degenerate {
+            self.keep_one(j);
+            return q;
+        }
+        let inv = R::ONE / (toward_q + toward_p);
+        let (vi, vj) = (self.verts[i], self.verts[j]);
+        self.verts[0] = vi;
+        self.verts[1] = vj;
+        self.weights = [toward_p * inv, toward_q * inv, R::ZERO];
+        self.len = 2;
+        n * (n.dot(p) / nn)
+    }
+
+    fn keep_one(&mut self, i: usize) {
+        self.verts[0] = self.verts[i.min(2)];
+        self.weights = [R::ONE, R::ZERO, R::ZERO];
+        self.len = 1;
     }
 }
 
@@ -223,30 +249,4 @@ fn closest_on_segment<R: Real>(p: V2<R>, q: V2<R>) -> V2<R> {
         return if p.length_squared() <= q.length_squared() { p } else { q };
     }
     n * (n.dot(p) / nn)
-}
-
-/// Closest point of segment `p`-`q` to the origin, with the segment reduced
-/// to the vertex or edge holding it.
-#[inline]
-fn solve_segment<R: Real, P: Payload<R>>(p: Vertex<R, P>, q: Vertex<R, P>) -> (Simplex<R, P>, V2<R>) {
-    let e = q.w - p.w;
-    let toward_q = -p.w.dot(e);
-    let toward_p = q.w.dot(e);
-    if toward_q <= R::ZERO {
-        return (Simplex::new(p), p.w);
-    }
-    if toward_p <= R::ZERO {
-        return (Simplex::new(q), q.w);
-    }
-    let n = e.perp();
-    let nn = n.length_squared();
-    if nn <= R::ZERO {
-        // An edge so short its squared length underflows: keep the nearer end.
-        let nearer = if p.w.length_squared() <= q.w.length_squared() { p } else { q };
-        return (Simplex::new(nearer), nearer.w);
-    }
-    let inv = R::ONE / (toward_q + toward_p);
-    let v = n * (n.dot(p.w) / nn);
-    let s = Simplex { verts: [p, q, q], weights: [toward_p * inv, toward_q * inv, R::ZERO], len: 2 };
-    (s, v)
 }
