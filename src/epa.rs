@@ -287,30 +287,47 @@ fn finish_curved<R: Real, S: Storage<R>>(
     if n < 3 || closest >= n {
         return fallback;
     }
-    let (prev, p, q, next) = (
-        cyclic(items, closest + n - 1),
-        cyclic(items, closest),
-        cyclic(items, closest + 1),
-        cyclic(items, closest + 2),
-    );
+    let (p, q) = (cyclic(items, closest), cyclic(items, closest + 1));
     let (_, normal) = edge(p.w, q.w);
     if p.id != NO_ID && q.id != NO_ID {
         return fallback;
     }
-    // Directions u(t) = normalize((1 - t) a + t b), t in [0, 1], sweep from the
-    // previous edge's normal to the next one's (less than a half turn apart).
-    let (a, b) = (edge(prev.w, p.w).1, edge(q.w, next.w).1);
-    if a.cross(b) <= R::ZERO {
+    let slope = |u: V2<R>| support(u).w.dot(u.perp());
+    // Bracket the root between the normals of two polytope edges: from the
+    // closest edge's normal, walk edge by edge (at most 8) the way the slope
+    // points until it changes sign. Consecutive normals are less than a half
+    // turn apart, so directions between them interpolate.
+    let edge_normal = |k: usize| edge(cyclic(items, k).w, cyclic(items, k + 1).w).1;
+    let slope_here = slope(normal);
+    iterations += 1;
+    let (mut a, mut g0, mut b, mut g1) = (normal, slope_here, normal, slope_here);
+    let steps = n.min(8);
+    if slope_here <= R::ZERO {
+        for k in 1..=steps {
+            let u = edge_normal(closest + k);
+            let g = slope(u);
+            iterations += 1;
+            (a, g0, b, g1) = (b, g1, u, g);
+            if g >= R::ZERO {
+                break;
+            }
+        }
+    } else {
+        for k in 1..=steps {
+            let u = edge_normal(closest + n * 8 - k);
+            let g = slope(u);
+            iterations += 1;
+            (a, g0, b, g1) = (u, g, a, g0);
+            if g <= R::ZERO {
+                break;
+            }
+        }
+    }
+    if !(g0 <= R::ZERO && g1 >= R::ZERO) || a.cross(b) <= R::ZERO {
         return fallback;
     }
     let direction = |t: R| (a * (R::ONE - t) + b * t).try_normalize().unwrap_or(normal);
-    let slope = |u: V2<R>| support(u).w.dot(u.perp());
     let (mut t0, mut t1) = (R::ZERO, R::ONE);
-    let (mut g0, mut g1) = (slope(a), slope(b));
-    iterations += 2;
-    if !(g0 <= R::ZERO && g1 >= R::ZERO) {
-        return fallback;
-    }
     // Illinois variant of regula falsi: superlinear, never leaves the bracket.
     let mut side = 0i8;
     let limit = iterations + 60;
