@@ -66,6 +66,9 @@ for target in "$M4" "$M0"; do
   [ "$hash" = "$expected_hash" ] || fail "golden hash on $target is ${hash:-missing}, tests/golden_hash.txt has $expected_hash"
 done
 
+step "the README's firmware example builds"
+cargo build --release --bin readme_example --target "$M4" -q || fail "README firmware example does not build"
+
 step "golden hash on the host (tests/golden.rs)"
 # Uses the main workspace's own target dir (CI's cargo test built it already).
 if (cd "$ROOT" && env -u CARGO_TARGET_DIR cargo test -q --test golden -- --nocapture 2>&1) >"$out/golden-host.txt"; then
