@@ -13,6 +13,7 @@ use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation};
 use crate::shape::SupportMap;
+use crate::simplex::Witness;
 use crate::transform::Transform;
 
 /// The narrow-phase detector: configuration plus a penetration solver (EPA
@@ -61,7 +62,11 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+        match core_distance::<_, _, _, Witness<R>>(
+            &pair,
+            self.config.max_distance_iterations(),
+            self.config.distance_epsilon(),
+        ) {
             CoreProximity::Overlapping { .. } => None,
             CoreProximity::Separated(core) => separation(&pair, &core),
         }
@@ -77,7 +82,9 @@ impl<R: Real, P> Gjk<R, P> {
         P: PenetrationSolver<R>,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+        // No closest points needed here: the simplex carries nothing else.
+        match core_distance::<_, _, _, ()>(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon())
+        {
             CoreProximity::Overlapping { simplex, iterations } => {
                 let mut points = [SupportPoint { point: R::vector(R::ZERO, R::ZERO), id: 0 }; 3];
                 let mut len = 0;
@@ -152,7 +159,7 @@ impl<R: Real, P> Gjk<R, P> {
     }
 }
 
-fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R>) -> Option<Separation<R>>
+fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R, Witness<R>>) -> Option<Separation<R>>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,

@@ -14,19 +14,21 @@ use crate::minkowski::{Pair, NO_ID};
 use crate::real::{Real, V2};
 use crate::result::Status;
 use crate::shape::SupportMap;
-use crate::simplex::{Closest, Simplex, Vertex, Witness};
+use crate::simplex::{Closest, Payload, Simplex, Vertex};
 
 /// What GJK found out about the cores.
-pub(crate) enum CoreProximity<R: Real> {
+/// `P` is what the simplex carries: [`Witness`] points when the caller
+/// wants closest points (distance), nothing when it does not (penetration).
+pub(crate) enum CoreProximity<R: Real, P> {
     /// The cores overlap or touch; the simplex encloses (or touches) the
     /// origin, EPA's starting point.
-    Overlapping { simplex: Simplex<R, Witness<R>>, iterations: u32 },
+    Overlapping { simplex: Simplex<R, P>, iterations: u32 },
     /// The cores are apart: closest point `v` of the Minkowski difference.
-    Separated(CoreSeparation<R>),
+    Separated(CoreSeparation<R, P>),
 }
 
-pub(crate) struct CoreSeparation<R: Real> {
-    pub simplex: Simplex<R, Witness<R>>,
+pub(crate) struct CoreSeparation<R: Real, P> {
+    pub simplex: Simplex<R, P>,
     pub v: V2<R>,
     /// The largest certified lower bound of the core distance seen.
     pub lower_bound: R,
@@ -51,9 +53,14 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 }
 
 /// Distance between the cores (radii not included).
-pub(crate) fn core_distance<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreProximity<R>
+pub(crate) fn core_distance<R, A, B, P>(
+    pair: &Pair<'_, R, A, B>,
+    max_iterations: u32,
+    epsilon: R,
+) -> CoreProximity<R, P>
 where
     R: Real,
+    P: Payload<R>,
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
@@ -100,13 +107,13 @@ where
     }
 }
 
-fn separated<R: Real>(
-    simplex: Simplex<R, Witness<R>>,
+fn separated<R: Real, P>(
+    simplex: Simplex<R, P>,
     v: V2<R>,
     lower_bound: R,
     iterations: u32,
     status: Status,
-) -> CoreProximity<R> {
+) -> CoreProximity<R, P> {
     CoreProximity::Separated(CoreSeparation { simplex, v, lower_bound, iterations, status })
 }
 

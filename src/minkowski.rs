@@ -3,6 +3,8 @@
 //! shapes far from the origin are handled with the precision of their size,
 //! not of their position.
 
+use core::cell::Cell;
+
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
@@ -62,6 +64,9 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     pub centers: V2<R>,
     frame: Transform<R>,
     reference_a: V2<R>,
+    /// Each shape's last support id: where the next support starts looking.
+    hint_a: Cell<u32>,
+    hint_b: Cell<u32>,
 }
 
 impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s, R, A, B> {
@@ -87,6 +92,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             centers: V2::zero(),
             frame: *ta,
             reference_a,
+            hint_a: Cell::new(NO_ID),
+            hint_b: Cell::new(NO_ID),
         };
         // Differences first: references and translations of nearby shapes
         // nearly cancel, and a difference of nearby floats is exact.
@@ -117,8 +124,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// The support point of B - A along `d`.
     #[inline(always)]
     pub fn support(&self, d: V2<R>) -> MinkowskiVertex<R> {
-        let (a, ia) = self.a.support_feature((-d).to_glam());
-        let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam());
+        let (a, ia) = self.a.support_feature_near((-d).to_glam(), self.hint_a.get());
+        let (b, ib) = self.b.support_feature_near(self.inverse_rotate(d).to_glam(), self.hint_b.get());
+        self.hint_a.set(ia);
+        self.hint_b.set(ib);
         let a = V2::from_glam(a);
         let b = self.rotate(V2::from_glam(b)) + self.offset;
         // NO_FEATURE (u32::MAX) and vertex indices past 16 bits both land here.

@@ -66,16 +66,19 @@ pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, 
             if numerator < R::ZERO {
                 return RayCast::closed_form(RayOutcome::Miss);
             }
-        } else {
-            let t = numerator / denominator;
-            if denominator < R::ZERO {
-                if t > lower {
-                    lower = t;
-                    entered = Some(normal);
+        } else if denominator < R::ZERO {
+            // Entering. t = numerator / denominator > lower, multiplied out
+            // (denominator < 0 flips it): one division per update, not per edge.
+            if numerator < lower * denominator {
+                lower = numerator / denominator;
+                entered = Some(normal);
+                if upper < lower {
+                    return RayCast::closed_form(RayOutcome::Miss);
                 }
-            } else if t < upper {
-                upper = t;
             }
+        } else if numerator < upper * denominator {
+            // Leaving: t < upper.
+            upper = numerator / denominator;
             if upper < lower {
                 return RayCast::closed_form(RayOutcome::Miss);
             }

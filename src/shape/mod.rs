@@ -76,6 +76,16 @@ pub trait SupportMap<R: Real> {
         (self.support(direction), NO_FEATURE)
     }
 
+    /// [`support_feature`](Self::support_feature) given the id this shape
+    /// returned for the previous, nearby direction. GJK and EPA turn their
+    /// search direction a little at a time, so a polygon can walk from the
+    /// previous vertex to the new one (convexity makes the walk exact) instead
+    /// of scanning or searching all of them. The default ignores the hint.
+    fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
+        let _ = previous;
+        self.support_feature(direction)
+    }
+
     /// An exact ray cast, for shapes that have a closed form: a ray in the
     /// local frame (origin relative to the reference point, unit direction),
     /// `max_length` infinite when unbounded. `None` (the default) makes the ray
@@ -104,6 +114,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
         (**self).support_feature(direction)
+    }
+    fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
+        (**self).support_feature_near(direction, previous)
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         (**self).cast_local_ray(o, d, max)
@@ -174,6 +187,40 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
     } else {
         lo
     }
+}
+
+/// Support from the previous support vertex `start`, by walking at most 3
+/// steps; a direction that turned farther than that (or an out-of-range
+/// hint) falls back to the full search, so a jump never costs O(n).
+#[inline]
+pub(crate) fn polytope_support_near<R: Real, const N: usize>(
+    vertices: &[V2<R>],
+    d: V2<R>,
+    start: u32,
+) -> (usize, V2<R>) {
+    const MAX_WALK: usize = 3;
+    let start = start as usize;
+    let n = vertices.len();
+    if start < n {
+        let mut k = start;
+        let mut best = at(vertices, k).dot(d);
+        for _ in 0..MAX_WALK {
+            let next = if k + 1 >= n { 0 } else { k + 1 };
+            let prev = if k == 0 { n - 1 } else { k - 1 };
+            let (dn, dp) = (at(vertices, next).dot(d), at(vertices, prev).dot(d));
+            if dn > best && dn >= dp {
+                k = next;
+                best = dn;
+            } else if dp > best {
+                k = prev;
+                best = dp;
+            } else {
+                // Neither neighbour is higher: on a convex polygon, the top.
+                return (k, at(vertices, k));
+            }
+        }
+    }
+    polytope_support::<R, N>(vertices, d)
 }
 
 /// Walk to the neighbour with the larger dot product until neither is larger.

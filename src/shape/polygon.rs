@@ -1,4 +1,4 @@
-use super::{polytope_support, SupportMap};
+use super::{polytope_support, polytope_support_near, SupportMap};
 use crate::ray::{cast_ray_polygon, LocalRayCast};
 use crate::real::{cyclic, orientation, Real, V2};
 use crate::transform::check_point;
@@ -187,6 +187,11 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[inline]
     fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
         let (i, v) = polytope_support::<R, N>(&self.vertices, V2::from_glam(direction));
+        (v.to_glam(), i as u32)
+    }
+    #[inline]
+    fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
+        let (i, v) = polytope_support_near::<R, N>(&self.vertices, V2::from_glam(direction), previous);
         (v.to_glam(), i as u32)
     }
     fn center(&self) -> R::Vector {

@@ -26,6 +26,10 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn support_feature(&self, d: R::Vector) -> (R::Vector, u32) {
         self.0.support_feature(d)
     }
+    #[inline]
+    fn support_feature_near(&self, d: R::Vector, previous: u32) -> (R::Vector, u32) {
+        self.0.support_feature_near(d, previous)
+    }
     fn center(&self) -> R::Vector {
         self.0.center()
     }
