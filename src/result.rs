@@ -42,20 +42,26 @@ pub struct Separation<R: Real> {
     pub point_b: R::Vector,
     /// Certified bound on the error of `distance` from the iteration: the
     /// gap between GJK's upper and lower bounds (rounding comes on top, a few
-    /// ulps of the pair's size). Zero-width for polytopes that converged.
+    /// ulps of the pair's size). Usually zero for polytopes that converged;
+    /// nearly parallel faces can leave it wider than the actual error.
     pub error_bound: R,
     pub iterations: u32,
     pub status: Status,
 }
 
 /// Two shapes overlapping: moving B by `depth` along `normal` (a unit vector
-/// pointing from A towards B) separates them.
+/// pointing from A towards B) separates them. The depth is always achievable
+/// in that sense (to rounding); the true minimum depth lies between
+/// `depth - error_bound` and `depth`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Penetration<R: Real> {
     pub normal: R::Vector,
     pub depth: R,
-    /// Certified bound on the error of `depth` from the iteration (the gap
-    /// between EPA's lower and upper bounds).
+    /// Certified bound on the error of `depth` from the iteration: the gap
+    /// between EPA's lower bound (its closest polytope edge) and the depth.
+    /// Zero-width for polytopes that converged; on curved shapes whose
+    /// polytope filled up it can be far wider than the actual error (the depth
+    /// is then polished to the configured epsilon, the bound is not).
     pub error_bound: R,
     /// GJK and EPA iterations together.
     pub iterations: u32,
