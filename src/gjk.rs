@@ -100,7 +100,14 @@ where
         // The gap test needs a positive lower bound: with none, the support
         // plane does not separate the origin, which may well be inside.
         let gap_closed = lower_bound > R::ZERO && length - lower_bound <= tolerance;
-        if repeats(&before, w.id) || repeats(&simplex.ids(), w.id) || gap_closed {
+        // A repeat of a vertex still in the simplex ends the loop exactly. A
+        // repeat of one just dropped does so in exact arithmetic too, but
+        // rounding can make it happen with the bounds still apart (a core
+        // nearly parallel to a face): then the bounds must agree to rounding,
+        // or the loop goes on (the stall guard and the limit still bound it).
+        let rounding = R::from_u32(16) * R::EPSILON * pair.scale;
+        let dropped_repeat = repeats(&before, w.id) && length - lower_bound <= rounding.max(tolerance);
+        if repeats(&simplex.ids(), w.id) || dropped_repeat || gap_closed {
             return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));
