@@ -121,14 +121,11 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
 /// Distance from the origin to the line through `p`, `q` (a counter-clockwise
 /// edge of a polytope around the origin), and its outward unit normal.
 fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
-    let n = (q - p).perp_cw();
-    let len = n.length();
-    if len > R::ZERO {
-        // Componentwise division: exact unit normals for axis-aligned edges.
-        let unit = V2::new(n.x / len, n.y / len);
-        (p.dot(unit).max(R::ZERO), unit)
-    } else {
-        (R::ZERO, p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO)))
+    // Componentwise normalisation (try_normalize): exact unit normals for
+    // axis-aligned edges, and no under- or overflow for tiny or huge ones.
+    match (q - p).perp_cw().try_normalize() {
+        Some(unit) => (p.dot(unit).max(R::ZERO), unit),
+        None => (R::ZERO, p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))),
     }
 }
 

@@ -88,7 +88,12 @@ where
         let stalled = vv > previous;
         previous = vv;
         if stalled {
-            return separated(simplex, v, lower_bound, iterations, Status::Converged);
+            // The lower bound so far was taken along earlier directions; one
+            // support along this one certifies the answer actually returned
+            // (near a vertex the direction can have turned a lot).
+            let w = pair.support(-v);
+            let lower_bound = lower_bound.max(v.dot(w.w) / vv.sqrt());
+            return separated(simplex, v, lower_bound, iterations + 1, Status::Converged);
         }
         if iterations >= max_iterations {
             return separated(simplex, v, lower_bound, iterations, Status::IterationLimit);

@@ -253,7 +253,9 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
                 return RayCast { outcome: RayOutcome::Miss, iterations, status: Status::Converged };
             }
             lambda -= vw / vd;
-            if lambda > max {
+            // A near-parallel support plane (vd tiny, even subnormal) sends
+            // lambda to infinity: no finite hit, so a miss (never inf or NaN).
+            if !lambda.is_finite() || lambda > max {
                 return RayCast { outcome: RayOutcome::Miss, iterations, status: Status::Converged };
             }
             x = o + d * lambda;

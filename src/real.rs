@@ -204,15 +204,19 @@ impl<R: Real> V2<R> {
     pub fn length(self) -> R {
         self.length_squared().sqrt()
     }
-    /// Unit vector, or `None` for the zero vector (never a NaN).
+    /// Unit vector, or `None` for the zero vector (never a NaN). Divided by
+    /// its largest component first, so no square under- or overflows: a
+    /// subnormal vector normalises as well as a unit one, and an axis-aligned
+    /// one gives exactly (0, +-1) or (+-1, 0).
     #[inline]
     pub fn try_normalize(self) -> Option<Self> {
-        let len = self.length();
-        if len > R::ZERO && len.is_finite() {
-            Some(self * (R::ONE / len))
-        } else {
-            None
+        let m = self.max_abs();
+        if !(m > R::ZERO && m.is_finite()) {
+            return None;
         }
+        let u = V2::new(self.x / m, self.y / m);
+        let len = u.length();
+        Some(V2::new(u.x / len, u.y / len))
     }
     #[inline(always)]
     pub fn is_finite(self) -> bool {

@@ -170,7 +170,15 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
             self.keep_one(j);
             return q;
         }
-        let inv = R::ONE / (toward_q + toward_p);
+        let sum = toward_q + toward_p;
+        if !(sum > R::ZERO && sum.is_finite()) {
+            // Products underflowed (coordinates below 1e-19 in f32): the
+            // weights would be 0 * inf. The nearer end is as good as rounding allows.
+            let nearer = if p.length_squared() <= q.length_squared() { i } else { j };
+            self.keep_one(nearer);
+            return if nearer == i { p } else { q };
+        }
+        let inv = R::ONE / sum;
         let (vi, vj) = (self.verts[i], self.verts[j]);
         self.verts[0] = vi;
         self.verts[1] = vj;
@@ -212,24 +220,28 @@ impl<R: Real, P> Simplex<R, P> {
     pub fn distance_and_normal(&self, v: V2<R>, toward: V2<R>) -> Option<(R, V2<R>)> {
         if self.len == 2 {
             let [p, q, _] = &self.verts;
-            let n = (q.w - p.w).perp();
-            let len = n.length();
-            if len > R::ZERO {
-                // Divided componentwise, an axis-aligned normal comes out as
-                // exactly (0, +-1) or (+-1, 0), so axis-aligned contacts give
-                // exact distances (a touching pair gives exactly 0).
-                let unit = V2::new(n.x / len, n.y / len);
+            // Normalised componentwise (try_normalize), an axis-aligned
+            // normal comes out as exactly (0, +-1) or (+-1, 0), so axis-aligned
+            // contacts give exact distances (a touching pair gives exactly 0).
+            if let Some(unit) = (q.w - p.w).perp().try_normalize() {
                 let signed = unit.dot(p.w);
                 let outward = signed > R::ZERO || (signed == R::ZERO && unit.dot(toward) >= R::ZERO);
                 return if outward { Some((signed, unit)) } else { Some((-signed, -unit)) };
             }
         }
-        let len = v.length();
-        if len > R::ZERO {
-            Some((len, v * (R::ONE / len)))
-        } else {
-            None
+        let m = v.max_abs();
+        if !(m > R::ZERO && m.is_finite()) {
+            return None;
         }
+        // sqrt(v . v) rounds least; below eps^2 its square would lose bits to
+        // underflow, and |v| is taken as m |v / m| (m its largest component).
+        if m >= R::EPSILON * R::EPSILON {
+            let len = v.length();
+            return Some((len, V2::new(v.x / len, v.y / len)));
+        }
+        let u = V2::new(v.x / m, v.y / m);
+        let len = u.length();
+        Some((m * len, V2::new(u.x / len, u.y / len)))
     }
 }
 

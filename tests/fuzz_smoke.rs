@@ -32,3 +32,23 @@ fn random_inputs_never_panic_hang_or_give_non_finite_output() {
     // Random bytes must reach the queries often, or this test proves nothing.
     assert!(pairs > 10_000 && rays > 10_000, "only {pairs} pair queries and {rays} ray casts ran");
 }
+
+/// Inputs the coverage-guided fuzzer (`cargo fuzz run queries`) found to
+/// crash, each named after its bug; replayed on every `cargo test`.
+#[test]
+fn fuzz_crash_regressions() {
+    for (name, data) in [
+        (
+            "gjk-raycast-subnormal-advance-gives-infinite-distance",
+            &include_bytes!("data/fuzz-crashes/gjk-raycast-subnormal-advance-gives-infinite-distance")[..],
+        ),
+        (
+            "centroid-overflows-at-f32-coordinate-limit",
+            &include_bytes!("data/fuzz-crashes/centroid-overflows-at-f32-coordinate-limit")[..],
+        ),
+        ("nan-witness-points-f64", &include_bytes!("data/fuzz-crashes/nan-witness-points-f64")[..]),
+    ] {
+        let ran = common::fuzz_one(data);
+        assert!(ran.0 + ran.1 > 0, "{name}: the input no longer reaches a query");
+    }
+}

@@ -172,8 +172,16 @@ fn pose() -> impl Strategy<Value = Pose> {
         .prop_map(|(x, y, angle, k)| Pose { t: [x, y], angle, cos_sin_scale: k })
 }
 
+/// A fixed seed so CI is reproducible; `PROPTEST_RNG_SEED=<u64>` explores
+/// other cases (failures are saved to the regressions file and replayed).
 fn config() -> ProptestConfig {
-    ProptestConfig { cases: 256, max_global_rejects: 4096, ..ProptestConfig::default() }
+    let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x6a6b_3264);
+    ProptestConfig {
+        cases: 256,
+        max_global_rejects: 4096,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
+        ..ProptestConfig::default()
+    }
 }
 
 macro_rules! property_suite {

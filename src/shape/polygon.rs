@@ -156,26 +156,24 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
 
 /// Area centroid of a counter-clockwise polygon: a fan from vertex 0, on
 /// coordinates relative to it, so the triangles' areas and centers lose
-/// nothing to a far-away origin.
+/// nothing to a far-away origin. Two passes (total area, then each triangle's
+/// share of it) so no intermediate grows like size cubed: at f32's coordinate
+/// limit that would overflow.
 pub(crate) fn area_centroid<R: Real>(v: &[V2<R>]) -> V2<R> {
     let origin = cyclic(v, 0);
-    let mut area2 = R::ZERO;
-    let mut acc = V2::zero();
-    for (&p, &q) in v.iter().zip(v.iter().skip(1)).skip(1) {
-        let (p, q) = (p - origin, q - origin);
-        let a = p.cross(q);
-        area2 += a;
-        acc = acc + (p + q) * a;
-    }
-    if area2 > R::ZERO {
-        origin + acc * (R::ONE / (R::from_u32(3) * area2))
+    let fan = || v.iter().zip(v.iter().skip(1)).skip(1).map(move |(&p, &q)| (p - origin, q - origin));
+    let area2 = fan().fold(R::ZERO, |sum, (p, q)| sum + p.cross(q));
+    if area2 > R::ZERO && area2.is_finite() {
+        let third = R::ONE / R::from_u32(3);
+        let acc = fan().fold(V2::zero(), |acc, (p, q)| acc + (p + q) * (p.cross(q) / area2));
+        origin + acc * third
     } else {
         // Unreachable for validated polygons; the vertex mean is a safe center.
         let mut m = V2::zero();
         for &p in v {
-            m = m + (p - origin);
+            m = m + (p - origin) * (R::ONE / R::from_u32(v.len() as u32));
         }
-        origin + m * (R::ONE / R::from_u32(v.len() as u32))
+        origin + m
     }
 }
 
