@@ -32,7 +32,8 @@ pub(crate) fn ellipse_support<R: Real>(half: V2<R>, d: V2<R>) -> V2<R> {
     if s == R::ZERO {
         return V2::new(half.x, R::ZERO);
     }
-    let u = d * (R::ONE / s);
+    // Divided, not multiplied by 1/s: 1/s overflows for a subnormal s.
+    let u = V2::new(d.x / s, d.y / s);
     let scaled = V2::new(half.x * u.x, half.y * u.y);
     let len = scaled.length();
     V2::new(half.x * scaled.x, half.y * scaled.y) * (R::ONE / len)

@@ -26,8 +26,10 @@ impl<R: Real> Slice<R> {
         }
         let half = theta * R::HALF;
         let (c, s) = (half.cos(), half.sin());
-        // Centroid of a sector: 2 r sin(a) / (3 a) from the apex.
-        let cx = R::TWO * radius * s / (R::from_u32(3) * half);
+        // Centroid of a sector: 2 r sin(a) / (3 a) from the apex. sin(a)/a
+        // tends to 1; a subnormal theta can halve to exactly 0 (0/0).
+        let sinc = if half > R::ZERO { s / half } else { R::ONE };
+        let cx = R::TWO * radius * sinc / R::from_u32(3);
         Ok(Self {
             radius,
             cos_half: c,
