@@ -186,7 +186,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
 
     let mut upper = R::INFINITY;
     let mut best = V2::new(R::ONE, R::ZERO);
-    loop {
+    // Ends by returning a converged answer, or by breaking with the limit it
+    // hit, the closest edge and its distance (then polished where curved).
+    let (closest, lower, status) = loop {
         let items = polytope.items();
         let n = items.len();
         let (mut i, mut lower) = (0, cyclic(items, 0).edge_distance);
@@ -200,16 +202,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let (p, q) = (cyclic(items, i), cyclic(items, j));
         let (_, normal) = edge(p.w, q.w);
         if iterations >= config.max_iterations() {
-            return finish_curved(
-                polytope,
-                i,
-                &support,
-                lower,
-                (upper, best),
-                tolerance,
-                iterations,
-                Status::IterationLimit,
-            );
+            break (i, lower, Status::IterationLimit);
         }
         let w = support(normal);
         iterations += 1;
@@ -231,23 +224,15 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             // Full: make room where the polytope no longer matters, then
             // look again (the support is recomputed, the bounds stand).
             if !prune(polytope, i, upper) {
-                return finish_curved(
-                    polytope,
-                    i,
-                    &support,
-                    lower,
-                    (upper, best),
-                    tolerance,
-                    iterations,
-                    Status::CapacityLimit,
-                );
+                break (i, lower, Status::CapacityLimit);
             }
             continue;
         }
         if let Some(c) = polytope.items_mut().get_mut(i) {
             c.edge_distance = edge(p.w, w.w).0;
         }
-    }
+    };
+    finish_curved(polytope, closest, &support, lower, (upper, best), tolerance, iterations, status)
 }
 
 /// EPA stopped short (polytope full or out of iterations). On a curved

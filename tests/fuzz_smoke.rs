@@ -47,7 +47,10 @@ fn fuzz_crash_regressions() {
             &include_bytes!("data/fuzz-crashes/centroid-overflows-at-f32-coordinate-limit")[..],
         ),
         ("nan-witness-points-f64", &include_bytes!("data/fuzz-crashes/nan-witness-points-f64")[..]),
-        ("slice-with-subnormal-angle-has-nan-centroid", &include_bytes!("data/fuzz-crashes/slice-with-subnormal-angle-has-nan-centroid")[..]),
+        (
+            "slice-with-subnormal-angle-has-nan-centroid",
+            &include_bytes!("data/fuzz-crashes/slice-with-subnormal-angle-has-nan-centroid")[..],
+        ),
     ] {
         let ran = common::fuzz_one(data);
         assert!(ran.0 + ran.1 > 0, "{name}: the input no longer reaches a query");

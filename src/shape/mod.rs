@@ -132,7 +132,7 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
 pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
     const LINEAR_SCAN_MAX: usize = 24;
     if N > LINEAR_SCAN_MAX && vertices.len() > LINEAR_SCAN_MAX {
-        let k = hill_climb(vertices, d, angular_search(vertices, d));
+        let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), vertices.len());
         return (k, at(vertices, k));
     }
     let mut best = (0, V2::zero());
@@ -199,40 +199,26 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     start: u32,
 ) -> (usize, V2<R>) {
     const MAX_WALK: usize = 3;
-    let start = start as usize;
-    let n = vertices.len();
-    if start < n {
-        let mut k = start;
-        let mut best = at(vertices, k).dot(d);
-        for _ in 0..MAX_WALK {
-            let next = if k + 1 >= n { 0 } else { k + 1 };
-            let prev = if k == 0 { n - 1 } else { k - 1 };
-            let (dn, dp) = (at(vertices, next).dot(d), at(vertices, prev).dot(d));
-            if dn > best && dn >= dp {
-                k = next;
-                best = dn;
-            } else if dp > best {
-                k = prev;
-                best = dp;
-            } else {
-                // Neither neighbour is higher: on a convex polygon, the top.
-                return (k, at(vertices, k));
-            }
+    if (start as usize) < vertices.len() {
+        if let (k, true) = hill_climb(vertices, d, start as usize, MAX_WALK) {
+            return (k, at(vertices, k));
         }
     }
     polytope_support::<R, N>(vertices, d)
 }
 
-/// Walk to the neighbour with the larger dot product until neither is larger.
-/// Strictly increasing values cannot cycle, and the walk is capped at n steps.
-fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize) -> usize {
+/// Walk to the neighbour with the larger dot product until neither is
+/// larger (on a convex polygon, the top), at most `max_steps` steps: returns
+/// the vertex and whether it is the top. Strictly increasing values cannot
+/// cycle, and `max_steps = n` always reaches the top.
+fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: usize) -> (usize, bool) {
     let n = vertices.len();
     if n == 0 {
-        return 0;
+        return (0, true);
     }
     let mut k = start.min(n - 1);
     let mut best = at(vertices, k).dot(d);
-    for _ in 0..n {
+    for _ in 0..max_steps {
         let next = if k + 1 >= n { 0 } else { k + 1 };
         let prev = if k == 0 { n - 1 } else { k - 1 };
         let (dn, dp) = (at(vertices, next).dot(d), at(vertices, prev).dot(d));
@@ -243,8 +229,8 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize) -> usize {
             k = prev;
             best = dp;
         } else {
-            break;
+            return (k, true);
         }
     }
-    k
+    (k, false)
 }
