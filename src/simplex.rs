@@ -178,11 +178,12 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
             self.keep_one(nearer);
             return if nearer == i { p } else { q };
         }
-        let inv = R::ONE / sum;
+        // Divided, not multiplied by 1/sum: 1/sum overflows for a subnormal
+        // sum (coordinates near 1e-154 in f64), the ratios never do.
         let (vi, vj) = (self.verts[i], self.verts[j]);
         self.verts[0] = vi;
         self.verts[1] = vj;
-        self.weights = [toward_p * inv, toward_q * inv, R::ZERO];
+        self.weights = [toward_p / sum, toward_q / sum, R::ZERO];
         self.len = 2;
         n * (n.dot(p) / nn)
     }

@@ -48,6 +48,10 @@ fn fuzz_crash_regressions() {
         ),
         ("nan-witness-points-f64", &include_bytes!("data/fuzz-crashes/nan-witness-points-f64")[..]),
         (
+            "segment-weights-overflow-for-subnormal-sum",
+            &include_bytes!("data/fuzz-crashes/segment-weights-overflow-for-subnormal-sum")[..],
+        ),
+        (
             "slice-with-subnormal-angle-has-nan-centroid",
             &include_bytes!("data/fuzz-crashes/slice-with-subnormal-angle-has-nan-centroid")[..],
         ),
