@@ -214,6 +214,12 @@ impl<R: Real> V2<R> {
         if !(m > R::ZERO && m.is_finite()) {
             return None;
         }
+        // The common case first: above eps^2 the square is a normal number
+        // (coordinates are bounded, so it cannot overflow either).
+        if m >= R::EPSILON * R::EPSILON {
+            let len = self.length();
+            return Some(V2::new(self.x / len, self.y / len));
+        }
         let u = V2::new(self.x / m, self.y / m);
         let len = u.length();
         Some(V2::new(u.x / len, u.y / len))
