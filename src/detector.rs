@@ -147,6 +147,9 @@ impl<R: Real, P> Gjk<R, P> {
             )
         });
         let outcome = match local.outcome {
+            // A closed form of a user's shape could report a hit at infinity
+            // (a ray parallel to rounding); no finite hit is a miss.
+            RayOutcome::Hit(h) if !(h.distance.is_finite() && h.distance <= max) => RayOutcome::Miss,
             RayOutcome::Hit(h) => RayOutcome::Hit(RayHit {
                 distance: h.distance,
                 // From the world ray, not the local point: one rounding less.

@@ -72,7 +72,9 @@ pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, 
             if numerator < lower * denominator {
                 lower = numerator / denominator;
                 entered = Some(normal);
-                if upper < lower {
+                // A subnormal denominator (a ray parallel to the face to
+                // rounding) sends t to infinity: no entry, a miss.
+                if upper < lower || !lower.is_finite() {
                     return RayCast::closed_form(RayOutcome::Miss);
                 }
             }

@@ -48,6 +48,10 @@ fn fuzz_crash_regressions() {
         ),
         ("nan-witness-points-f64", &include_bytes!("data/fuzz-crashes/nan-witness-points-f64")[..]),
         (
+            "polygon-ray-parallel-to-rounding-hits-at-infinity",
+            &include_bytes!("data/fuzz-crashes/polygon-ray-parallel-to-rounding-hits-at-infinity")[..],
+        ),
+        (
             "segment-weights-overflow-for-subnormal-sum",
             &include_bytes!("data/fuzz-crashes/segment-weights-overflow-for-subnormal-sum")[..],
         ),
