@@ -996,9 +996,10 @@ fn run_config<R: Real>() {
     let mut rep = Report::default();
     let gjk = Gjk::<R>::new();
     // gjk2d's epsilons are relative (times the pair's size) and documented as
-    // 1e-6 in f32 and 1e-12 in f64; dyn4j's are absolute, 1.0536712127723509e-8
+    // 5e-7 in f32 and 5e-13 in f64 (half the 1e-6 / 1e-12 they give, rounding
+    // comes on top); dyn4j's are absolute, 1.0536712127723509e-8
     // (sqrt of f64 epsilon, roughly). Those checks assert gjk2d's documented value.
-    let rel_eps = if p.is_f32 { 1e-6 } else { 1e-12 };
+    let rel_eps = if p.is_f32 { 5e-7 } else { 5e-13 };
     for c in &d.config {
         rep.total += 1;
         match c {
