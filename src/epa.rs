@@ -296,7 +296,8 @@ fn finish_curved<R: Real, S: Storage<R>>(
         }
     } else {
         for k in 1..=steps {
-            let u = edge_normal(closest + n * 8 - k);
+            // k <= steps <= n: going back k edges, cyclically.
+            let u = edge_normal(closest + n - k);
             let g = slope(u);
             iterations += 1;
             (a, g0, b, g1) = (u, g, a, g0);

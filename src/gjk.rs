@@ -65,6 +65,9 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let tolerance = epsilon * pair.scale;
+    // How close the bounds must be for a repeat of a just-dropped vertex to
+    // end the loop (see below): rounding, or the tolerance if larger.
+    let repeat_gap = (R::from_u32(16) * R::EPSILON * pair.scale).max(tolerance);
     let mut simplex = Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
     let mut lower_bound = R::ZERO;
     let mut previous = R::INFINITY;
@@ -82,20 +85,13 @@ where
             return CoreProximity::Overlapping { simplex, iterations };
         }
         // |v| grew: only rounding can do that, and the simplex is as close as
-        // it gets (within rounding of the previous one). A tie is not a stall:
-        // near a vertex a segment can turn the direction a lot while |v| moves
-        // less than an ulp; the next support then repeats a vertex.
+        // it gets (within rounding of the previous one). It still takes the
+        // support below: the lower bound so far was measured along earlier
+        // directions, and near a vertex the direction can have turned a lot.
+        // A tie is not a stall: the next support then repeats a vertex.
         let stalled = vv > previous;
         previous = vv;
-        if stalled {
-            // The lower bound so far was taken along earlier directions; one
-            // support along this one certifies the answer actually returned
-            // (near a vertex the direction can have turned a lot).
-            let w = pair.support(-v);
-            let lower_bound = lower_bound.max(v.dot(w.w) / vv.sqrt());
-            return separated(simplex, v, lower_bound, iterations + 1, Status::Converged);
-        }
-        if iterations >= max_iterations {
+        if !stalled && iterations >= max_iterations {
             return separated(simplex, v, lower_bound, iterations, Status::IterationLimit);
         }
         let w = pair.support(-v);
@@ -110,9 +106,8 @@ where
         // rounding can make it happen with the bounds still apart (a core
         // nearly parallel to a face): then the bounds must agree to rounding,
         // or the loop goes on (the stall guard and the limit still bound it).
-        let rounding = R::from_u32(16) * R::EPSILON * pair.scale;
-        let dropped_repeat = repeats(&before, w.id) && length - lower_bound <= rounding.max(tolerance);
-        if repeats(&simplex.ids(), w.id) || dropped_repeat || gap_closed {
+        let dropped_repeat = repeats(&before, w.id) && length - lower_bound <= repeat_gap;
+        if stalled || repeats(&simplex.ids(), w.id) || dropped_repeat || gap_closed {
             return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));

@@ -78,6 +78,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         } else {
             (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos, true)
         };
+        let (radius_a, radius_b) = (a.radius(), b.radius());
         let mut pair = Self {
             a,
             b,
@@ -85,9 +86,9 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             sin,
             rotated,
             offset: V2::zero(),
-            radius_a: a.radius(),
-            radius_b: b.radius(),
-            radius: a.radius() + b.radius(),
+            radius_a,
+            radius_b,
+            radius: radius_a + radius_b,
             scale: a.bounding_radius().max(b.bounding_radius()),
             centers: V2::zero(),
             frame: *ta,

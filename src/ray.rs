@@ -225,9 +225,10 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     let tolerance = epsilon * shape.bounding_radius();
     let support = |dir: V2<R>| {
         let p = V2::from_glam(shape.support(dir.to_glam()));
-        match dir.try_normalize() {
-            Some(u) if radius > R::ZERO => p + u * radius,
-            _ => p,
+        // Only a rounded shape needs the unit direction.
+        match (radius > R::ZERO).then(|| dir.try_normalize()).flatten() {
+            Some(u) => p + u * radius,
+            None => p,
         }
     };
     let mut lambda = R::ZERO;

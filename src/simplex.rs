@@ -134,17 +134,21 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         // degenerate (flat) triangle tries all three.
         const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
         let ws = [wa, wb, wc];
-        let mut best: Option<((usize, usize), R)> = None;
-        for (&(i, j), &side) in EDGES.iter().zip(sides.iter()) {
+        let mut best: Option<Candidate<R>> = None;
+        for (&edge, &side) in EDGES.iter().zip(sides.iter()) {
             if outside(side) {
-                let vv = closest_on_segment(ws[i], ws[j]).length_squared();
-                if best.is_none_or(|(_, b)| vv < b) {
-                    best = Some(((i, j), vv));
+                let (foot, v) = segment_foot(ws[edge.0], ws[edge.1]);
+                let vv = v.length_squared();
+                if best.as_ref().is_none_or(|b| vv < b.vv) {
+                    best = Some(Candidate { edge, foot, v, vv });
                 }
             }
         }
         match best {
-            Some(((i, j), _)) => Closest::Point(self.reduce_to_segment(i, j)),
+            Some(Candidate { edge: (i, j), foot, v, .. }) => {
+                self.reduce(i, j, foot);
+                Closest::Point(v)
+            }
             None => Closest::Enclosed,
         }
     }
@@ -152,40 +156,28 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     /// Reduces to the vertex or edge of `verts[i]`-`verts[j]` holding the
     /// closest point to the origin, and returns that point.
     fn reduce_to_segment(&mut self, i: usize, j: usize) -> V2<R> {
+        let (foot, v) = segment_foot(self.verts[i.min(2)].w, self.verts[j.min(2)].w);
+        self.reduce(i, j, foot);
+        v
+    }
+
+    /// Keeps what `foot` says of the segment `verts[i]`-`verts[j]`.
+    fn reduce(&mut self, i: usize, j: usize, foot: Foot<R>) {
         // Always 0..=2; the clamp lets the compiler see it (no bounds check).
         let (i, j) = (i.min(2), j.min(2));
-        let (p, q) = (self.verts[i].w, self.verts[j].w);
-        let e = q - p;
-        let toward_q = -p.dot(e);
-        let toward_p = q.dot(e);
-        let n = e.perp();
-        let nn = n.length_squared();
-        // An edge so short its squared length underflows keeps the nearer end.
-        let degenerate = nn <= R::ZERO;
-        if toward_q <= R::ZERO || (degenerate && p.length_squared() <= q.length_squared()) {
-            self.keep_one(i);
-            return p;
+        match foot {
+            Foot::AtFirst => self.keep_one(i),
+            Foot::AtSecond => self.keep_one(j),
+            Foot::Between { first, second, sum } => {
+                let (vi, vj) = (self.verts[i], self.verts[j]);
+                self.verts[0] = vi;
+                self.verts[1] = vj;
+                // Divided, not multiplied by 1/sum: 1/sum overflows for a
+                // subnormal sum (coordinates near 1e-154 in f64).
+                self.weights = [first / sum, second / sum, R::ZERO];
+                self.len = 2;
+            }
         }
-        if toward_p <= R::ZERO || degenerate {
-            self.keep_one(j);
-            return q;
-        }
-        let sum = toward_q + toward_p;
-        if !(sum > R::ZERO && sum.is_finite()) {
-            // Products underflowed (coordinates below 1e-19 in f32): the
-            // weights would be 0 * inf. The nearer end is as good as rounding allows.
-            let nearer = if p.length_squared() <= q.length_squared() { i } else { j };
-            self.keep_one(nearer);
-            return if nearer == i { p } else { q };
-        }
-        // Divided, not multiplied by 1/sum: 1/sum overflows for a subnormal
-        // sum (coordinates near 1e-154 in f64), the ratios never do.
-        let (vi, vj) = (self.verts[i], self.verts[j]);
-        self.verts[0] = vi;
-        self.verts[1] = vj;
-        self.weights = [toward_p / sum, toward_q / sum, R::ZERO];
-        self.len = 2;
-        n * (n.dot(p) / nn)
     }
 
     fn keep_one(&mut self, i: usize) {
@@ -246,20 +238,51 @@ impl<R: Real, P> Simplex<R, P> {
     }
 }
 
-/// Closest point of the segment `p`-`q` to the origin (no reduction).
+/// One of a triangle's edges as the possible home of the closest point.
+struct Candidate<R> {
+    edge: (usize, usize),
+    foot: Foot<R>,
+    v: V2<R>,
+    vv: R,
+}
+
+/// Where the closest point of a segment to the origin lies.
+#[derive(Clone, Copy, Debug)]
+enum Foot<R> {
+    AtFirst,
+    AtSecond,
+    /// Strictly inside: the barycentric weights are `first / sum` and
+    /// `second / sum`.
+    Between {
+        first: R,
+        second: R,
+        sum: R,
+    },
+}
+
+/// The closest point of segment `p`-`q` to the origin and where it lies.
+/// Inside, it is `n (n . p) / (n . n)` with `n` normal to the edge (no
+/// `p + t (q - p)` cancellation). An edge so short its squared length
+/// underflows, or weights that would be 0 * inf (coordinates below 1e-19 in
+/// f32), keep the nearer end: as good as rounding allows.
 #[inline]
-fn closest_on_segment<R: Real>(p: V2<R>, q: V2<R>) -> V2<R> {
+fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     let e = q - p;
-    if p.dot(e) >= R::ZERO {
-        return p;
-    }
-    if q.dot(e) <= R::ZERO {
-        return q;
-    }
+    let toward_q = -p.dot(e);
+    let toward_p = q.dot(e);
     let n = e.perp();
     let nn = n.length_squared();
-    if nn <= R::ZERO {
-        return if p.length_squared() <= q.length_squared() { p } else { q };
+    let p_nearer = p.length_squared() <= q.length_squared();
+    let degenerate = nn <= R::ZERO;
+    if toward_q <= R::ZERO || (degenerate && p_nearer) {
+        return (Foot::AtFirst, p);
     }
-    n * (n.dot(p) / nn)
+    if toward_p <= R::ZERO || degenerate {
+        return (Foot::AtSecond, q);
+    }
+    let sum = toward_q + toward_p;
+    if !(sum > R::ZERO && sum.is_finite()) {
+        return if p_nearer { (Foot::AtFirst, p) } else { (Foot::AtSecond, q) };
+    }
+    (Foot::Between { first: toward_p, second: toward_q, sum }, n * (n.dot(p) / nn))
 }

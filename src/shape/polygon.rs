@@ -47,9 +47,10 @@ impl<R: Real, const N: usize> Polygon<R, N> {
             world.reverse();
         }
         let reference = choose_reference(&world);
-        let mut vertices: Vec<V2<R>, N> = Vec::new();
-        for &p in world.iter() {
-            let _ = vertices.push(p - reference);
+        // Shifted in place: no second N-vertex buffer on the stack.
+        let mut vertices = world;
+        for p in vertices.iter_mut() {
+            *p = *p - reference;
         }
         let center = area_centroid(&vertices);
         let mut r2 = R::ZERO;
