@@ -35,68 +35,19 @@
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
-use gjk2d_oracle::{pair, ray as oracle_ray, transform_shape, ExactShape, PairAnswer, RayStatus, Shape};
+use gjk2d_oracle::{pair, ray as oracle_ray, transform_shape, ExactShape, PairAnswer, RayStatus};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 
-type Pt = [f64; 2];
+#[path = "common/geo.rs"]
+mod geo;
+use geo::{norm, sub, Geo, Pt};
 
 fn r32(x: f64) -> f64 {
     x as f32 as f64
 }
 fn rp(p: Pt) -> Pt {
     [r32(p[0]), r32(p[1])]
-}
-fn norm(p: Pt) -> f64 {
-    p[0].hypot(p[1])
-}
-fn sub(p: Pt, q: Pt) -> Pt {
-    [p[0] - q[0], p[1] - q[1]]
-}
-
-/// A shape as plain numbers, every one exactly representable in f32.
-#[derive(Clone, Debug)]
-enum Geo {
-    Poly(Vec<Pt>),
-    Circle(Pt, f64),
-    Capsule(Pt, Pt, f64),
-}
-
-impl Geo {
-    fn oracle(&self) -> Shape {
-        match self {
-            Geo::Poly(v) => Shape::Polygon(v.clone()),
-            Geo::Circle(c, r) => Shape::Circle { center: *c, radius: *r },
-            Geo::Capsule(a, b, r) => Shape::Capsule { a: *a, b: *b, radius: *r },
-        }
-    }
-    fn core(&self) -> Vec<Pt> {
-        match self {
-            Geo::Poly(v) => v.clone(),
-            Geo::Circle(c, _) => vec![*c],
-            Geo::Capsule(a, b, _) => vec![*a, *b],
-        }
-    }
-    fn radius(&self) -> f64 {
-        match self {
-            Geo::Poly(_) => 0.0,
-            Geo::Circle(_, r) | Geo::Capsule(_, _, r) => *r,
-        }
-    }
-    /// Largest local coordinate magnitude, radius included.
-    fn extent(&self) -> f64 {
-        self.core().iter().map(|&p| norm(p)).fold(0.0, f64::max) + self.radius()
-    }
-    fn is_circle(&self) -> bool {
-        matches!(self, Geo::Circle(..))
-    }
-    /// Support value `h(n)` (any `n`, not unit) of the shape mapped by
-    /// `x -> M x + t`, `M = [[c, -s], [s, c]]`, in f64.
-    fn support(&self, cs: (f64, f64), t: Pt, n: Pt) -> f64 {
-        let m = [cs.0 * n[0] + cs.1 * n[1], -cs.1 * n[0] + cs.0 * n[1]];
-        let core = self.core().iter().map(|p| p[0] * m[0] + p[1] * m[1]).fold(f64::NEG_INFINITY, f64::max);
-        core + self.radius() * norm(n) + t[0] * n[0] + t[1] * n[1]
-    }
 }
 
 /// Parameters of one random shape.
@@ -211,6 +162,7 @@ macro_rules! property_suite {
                     }
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).ok()?),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).ok()?),
+                    Geo::Segment(a, b) => Box::new(Segment::new(v(*a), v(*b)).ok()?),
                 })
             }
 

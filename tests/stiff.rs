@@ -29,64 +29,11 @@
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
-use gjk2d_oracle::{pair, ray as oracle_ray, transform_shape, ExactShape, RayStatus, Shape};
+use gjk2d_oracle::{pair, ray as oracle_ray, transform_shape, ExactShape, RayStatus};
 
-type Pt = [f64; 2];
-
-fn norm(p: Pt) -> f64 {
-    p[0].hypot(p[1])
-}
-fn sub(p: Pt, q: Pt) -> Pt {
-    [p[0] - q[0], p[1] - q[1]]
-}
-
-/// A shape as plain numbers, exactly representable in the suite's precision.
-#[derive(Clone, Debug)]
-enum Geo {
-    Poly(Vec<Pt>),
-    Circle(Pt, f64),
-    Capsule(Pt, Pt, f64),
-    Segment(Pt, Pt),
-}
-
-impl Geo {
-    fn oracle(&self) -> Shape {
-        match self {
-            Geo::Poly(v) => Shape::Polygon(v.clone()),
-            Geo::Circle(c, r) => Shape::Circle { center: *c, radius: *r },
-            Geo::Capsule(a, b, r) => Shape::Capsule { a: *a, b: *b, radius: *r },
-            Geo::Segment(a, b) => Shape::Capsule { a: *a, b: *b, radius: 0.0 },
-        }
-    }
-    fn core(&self) -> Vec<Pt> {
-        match self {
-            Geo::Poly(v) => v.clone(),
-            Geo::Circle(c, _) => vec![*c],
-            Geo::Capsule(a, b, _) | Geo::Segment(a, b) => vec![*a, *b],
-        }
-    }
-    fn radius(&self) -> f64 {
-        match self {
-            Geo::Poly(_) | Geo::Segment(..) => 0.0,
-            Geo::Circle(_, r) | Geo::Capsule(_, _, r) => *r,
-        }
-    }
-    fn extent(&self) -> f64 {
-        self.core().iter().map(|&p| norm(p)).fold(0.0, f64::max) + self.radius()
-    }
-    fn support(&self, cs: (f64, f64), t: Pt, n: Pt) -> f64 {
-        let m = [cs.0 * n[0] + cs.1 * n[1], -cs.1 * n[0] + cs.0 * n[1]];
-        let core = self.core().iter().map(|p| p[0] * m[0] + p[1] * m[1]).fold(f64::NEG_INFINITY, f64::max);
-        core + self.radius() * norm(n) + t[0] * n[0] + t[1] * n[1]
-    }
-    /// Short description (big polygons are not printed in full).
-    fn describe(&self) -> String {
-        match self {
-            Geo::Poly(v) if v.len() > 12 => format!("Poly({} vertices, first {:?})", v.len(), v[0]),
-            other => format!("{other:?}"),
-        }
-    }
-}
+#[path = "common/geo.rs"]
+mod geo;
+use geo::{norm, sub, Geo, Pt};
 
 macro_rules! stiff_suite {
     ($modname:ident, $r:ty, $vec:ident) => {
