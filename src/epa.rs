@@ -80,16 +80,39 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     fn items_mut(&mut self) -> &mut [Corner<R>] {
         self
     }
+    // Shifted by swaps of neighbours, not `Vec::insert`/`remove`: a shift
+    // between overlapping slots is a `memmove` call, and on a microcontroller
+    // that links 1.5 KB of flash nothing else here needs. A polytope has a few
+    // dozen corners at most; the swaps cost no more than the shift.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
-        index <= self.len() && self.insert(index, c).is_ok()
+        if index > self.len() || self.push(c).is_err() {
+            return false;
+        }
+        let items: &mut [Corner<R>] = self;
+        for k in (index..items.len().saturating_sub(1)).rev() {
+            swap_with_next(items, k);
+        }
+        true
     }
     fn remove_at(&mut self, index: usize) {
+        let items: &mut [Corner<R>] = self;
+        for k in index..items.len().saturating_sub(1) {
+            swap_with_next(items, k);
+        }
         if index < self.len() {
-            self.remove(index);
+            self.pop();
         }
     }
     fn clear_all(&mut self) {
         self.clear()
+    }
+}
+
+/// Swaps items `k` and `k + 1` (nothing out of range: no panic path).
+#[inline(always)]
+fn swap_with_next<T>(items: &mut [T], k: usize) {
+    if let Some([a, b]) = items.get_mut(k..k.saturating_add(2)) {
+        core::mem::swap(a, b);
     }
 }
 

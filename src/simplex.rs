@@ -163,15 +163,25 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
 
     /// Keeps what `foot` says of the segment `verts[i]`-`verts[j]`.
     fn reduce(&mut self, i: usize, j: usize, foot: Foot<R>) {
-        // Always 0..=2; the clamp lets the compiler see it (no bounds check).
-        let (i, j) = (i.min(2), j.min(2));
         match foot {
             Foot::AtFirst => self.keep_one(i),
             Foot::AtSecond => self.keep_one(j),
             Foot::Between { first, second, sum } => {
-                let (vi, vj) = (self.verts[i], self.verts[j]);
-                self.verts[0] = vi;
-                self.verts[1] = vj;
+                // Constant indices only: a copy between slots the compiler
+                // cannot tell apart becomes a call to `memmove`, 1.5 KB of
+                // flash in a firmware that needs nothing else of it.
+                match (i, j) {
+                    (1, 2) => {
+                        self.verts[0] = self.verts[1];
+                        self.verts[1] = self.verts[2];
+                    }
+                    (2, 0) => {
+                        let first_vertex = self.verts[0];
+                        self.verts[0] = self.verts[2];
+                        self.verts[1] = first_vertex;
+                    }
+                    _ => {}
+                }
                 // Divided, not multiplied by 1/sum: 1/sum overflows for a
                 // subnormal sum (coordinates near 1e-154 in f64).
                 self.weights = [first / sum, second / sum, R::ZERO];
@@ -181,7 +191,11 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     }
 
     fn keep_one(&mut self, i: usize) {
-        self.verts[0] = self.verts[i.min(2)];
+        match i {
+            1 => self.verts[0] = self.verts[1],
+            2 => self.verts[0] = self.verts[2],
+            _ => {}
+        }
         self.weights = [R::ONE, R::ZERO, R::ZERO];
         self.len = 1;
     }
