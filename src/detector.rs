@@ -47,9 +47,12 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
-        let margin = self.config.detect_epsilon() * pair.scale;
-        let (intersecting, iterations, status) =
-            intersect(&pair, self.config.max_detect_iterations(), margin, self.config.distance_epsilon());
+        let (intersecting, iterations, status) = intersect(
+            &pair,
+            self.config.max_detect_iterations(),
+            self.config.detect_epsilon(),
+            self.config.distance_epsilon(),
+        );
         Detection { intersecting, iterations, status }
     }
 

@@ -64,10 +64,11 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let tolerance = epsilon * pair.scale;
+    let scale = pair.scale();
+    let tolerance = epsilon * scale;
     // How close the bounds must be for a repeat of a just-dropped vertex to
     // end the loop (see below): rounding, or the tolerance if larger.
-    let repeat_gap = (R::from_u32(16) * R::EPSILON * pair.scale).max(tolerance);
+    let repeat_gap = (R::from_u32(16) * R::EPSILON * scale).max(tolerance);
     let mut simplex = Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
     let mut lower_bound = R::ZERO;
     let mut previous = R::INFINITY;
@@ -125,12 +126,12 @@ fn separated<R: Real, P>(
 }
 
 /// The intersection test: GJK that stops as soon as either verdict is
-/// certain, and never computes closest points. `margin` widens the shapes
-/// (the detect epsilon times the size).
+/// certain, and never computes closest points. The shapes are widened by
+/// `detect_epsilon` times the pair's size.
 pub(crate) fn intersect<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     max_iterations: u32,
-    margin: R,
+    detect_epsilon: R,
     epsilon: R,
 ) -> (bool, u32, Status)
 where
@@ -138,9 +139,17 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let reach = pair.radius + margin;
-    let reach2 = reach * reach;
-    let tolerance = epsilon * pair.scale;
+    // How far apart the cores may be and still count as intersecting,
+    // squared: from the squared size when the shapes are sharp (polygons),
+    // so the test takes no square root at all.
+    let reach2 = if pair.radius == R::ZERO {
+        detect_epsilon * detect_epsilon * pair.scale_squared()
+    } else {
+        let reach = pair.radius + detect_epsilon * pair.scale();
+        reach * reach
+    };
+    // The gap tolerance, for curved cores only (computed on first use).
+    let mut tolerance = None;
     let mut simplex: Simplex<R, ()> =
         Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
     let mut previous = R::INFINITY;
@@ -174,8 +183,11 @@ where
         if repeats(&before, w.id) || repeats(&simplex.ids(), w.id) {
             return (false, iterations, Status::Converged);
         }
-        if w.id == NO_ID && vw > R::ZERO && vv - vw <= tolerance * vv.sqrt() {
-            return (false, iterations, Status::Converged);
+        if w.id == NO_ID && vw > R::ZERO {
+            let tolerance = *tolerance.get_or_insert_with(|| epsilon * pair.scale());
+            if vv - vw <= tolerance * vv.sqrt() {
+                return (false, iterations, Status::Converged);
+            }
         }
         simplex.push(Vertex::from_minkowski(&w));
     }

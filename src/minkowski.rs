@@ -59,7 +59,6 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     pub radius: R,
     pub radius_a: R,
     pub radius_b: R,
-    pub scale: R,
     /// B's center minus A's center: GJK's first search direction.
     pub centers: V2<R>,
     frame: Transform<R>,
@@ -89,7 +88,6 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             radius_a,
             radius_b,
             radius: radius_a + radius_b,
-            scale: a.bounding_radius().max(b.bounding_radius()),
             centers: V2::zero(),
             frame: *ta,
             reference_a,
@@ -103,6 +101,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         pair.offset = translations + references;
         pair.centers = pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
         pair
+    }
+
+    /// The pair's size: the larger bounding radius. Asked for where it is
+    /// needed, not up front: the polygon overlap test never needs it, and then
+    /// links no square root.
+    pub fn scale(&self) -> R {
+        self.a.bounding_radius().max(self.b.bounding_radius())
+    }
+    /// The square of [`scale`](Self::scale), without a square root for
+    /// shapes that keep their radius squared.
+    pub fn scale_squared(&self) -> R {
+        self.a.bounding_radius_squared().max(self.b.bounding_radius_squared())
     }
 
     #[inline(always)]
@@ -152,6 +162,6 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
         SupportPoint { point: v.w.to_glam(), id: v.id }
     }
     fn scale(&self) -> R {
-        self.scale
+        Pair::scale(self)
     }
 }

@@ -8,8 +8,8 @@
 use core::panic::PanicInfo;
 use core::ptr::{addr_of, addr_of_mut, read_volatile, write_volatile};
 use gjk2d::{
-    Capsule, Circle, Ellipse, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded,
-    Segment, Slice, SupportMap, Transform, Triangle,
+    Capsule, Circle, Ellipse, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded, Segment, Slice,
+    SupportMap, Transform, Triangle,
 };
 
 #[panic_handler]
@@ -28,8 +28,7 @@ const INPUT: [f64; 32] = [
     0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, // polygon B
     0.5, 0.25, 1.0, 0.0, // B's placement: translation, cos, sin
     -2.0, 0.5, 1.0, 0.0, // ray origin, direction
-    0.5, 0.25, 2.0, 1.0, 1.2, 0.0, 3.0,
-    0.0, // radius, radius, width, height, angle, 0, shape pair, 0
+    0.5, 0.25, 2.0, 1.0, 1.2, 0.0, 3.0, 0.0, // radius, radius, width, height, angle, 0, shape pair, 0
 ];
 
 #[no_mangle]
@@ -98,18 +97,16 @@ pub fn baseline() {
     f32::input(0).sink();
 }
 
-pub struct Polygons<R: Io> {
-    pub a: Polygon<R, 8>,
-    pub b: Polygon<R, 8>,
-    pub tb: Transform<R>,
-}
-
-/// Two polygons and B's placement, from the inputs.
-pub fn polygons<R: Io>() -> Option<Polygons<R>> {
-    let a = Polygon::new(&[vec::<R>(0), vec::<R>(2), vec::<R>(4), vec::<R>(6)]).ok()?;
-    let b = Polygon::new(&[vec::<R>(8), vec::<R>(10), vec::<R>(12), vec::<R>(14)]).ok()?;
-    let tb = Transform::from_cos_sin(vec::<R>(16), R::input(18), R::input(19)).ok()?;
-    Some(Polygons { a, b, tb })
+/// Two polygons and B's placement, from the inputs, handed to `f` by
+/// reference where they were built, as a firmware keeps its shapes in place
+/// (moving an 88-byte polygon is a call to `memcpy`).
+pub fn with_polygons<R: Io>(f: impl FnOnce(&Polygon<R, 8>, &Polygon<R, 8>, &Transform<R>)) {
+    let a = Polygon::new(&[vec::<R>(0), vec::<R>(2), vec::<R>(4), vec::<R>(6)]);
+    let b = Polygon::new(&[vec::<R>(8), vec::<R>(10), vec::<R>(12), vec::<R>(14)]);
+    let tb = Transform::from_cos_sin(vec::<R>(16), R::input(18), R::input(19));
+    if let (Ok(a), Ok(b), Ok(tb)) = (&a, &b, &tb) {
+        f(a, b, tb);
+    }
 }
 
 pub fn intersects<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
@@ -172,26 +169,10 @@ pub fn raycast<R: Io, S: SupportMap<R> + ?Sized>(gjk: &Gjk<R>, shape: &S, t: &Tr
 /// each query for all pairs, as a firmware with a shape enum would do).
 pub fn everything<R: Io>() {
     let gjk = Gjk::<R>::new();
-    let (r1, r2, w, h, angle) = (
-        R::input(24),
-        R::input(25),
-        R::input(26),
-        R::input(27),
-        R::input(28),
-    );
-    let (
-        Some(p),
-        Ok(circle),
-        Ok(rect),
-        Ok(tri),
-        Ok(seg),
-        Ok(cap),
-        Ok(ell),
-        Ok(half),
-        Ok(slice),
-        Ok(round),
-    ) = (
-        polygons::<R>(),
+    let (r1, r2, w, h, angle) = (R::input(24), R::input(25), R::input(26), R::input(27), R::input(28));
+    let a = Polygon::<R, 8>::new(&[vec::<R>(0), vec::<R>(2), vec::<R>(4), vec::<R>(6)]);
+    let (Ok(polygon), Ok(circle), Ok(rect), Ok(tri), Ok(seg), Ok(cap), Ok(ell), Ok(half), Ok(slice), Ok(round)) = (
+        &a,
         Circle::at(vec::<R>(0), r1),
         Rectangle::new(w, h),
         Triangle::new(vec::<R>(0), vec::<R>(2), vec::<R>(4)),
@@ -201,14 +182,11 @@ pub fn everything<R: Io>() {
         HalfEllipse::new(w, h),
         Slice::new(r1, angle),
         Rectangle::new(w, h).and_then(|s| Rounded::new(s, r2)),
-    )
-    else {
+    ) else {
         sink_u32(0xdead);
         return;
     };
-    let shapes: [&dyn SupportMap<R>; 10] = [
-        &p.a, &circle, &rect, &tri, &seg, &cap, &ell, &half, &slice, &round,
-    ];
+    let shapes: [&dyn SupportMap<R>; 10] = [polygon, &circle, &rect, &tri, &seg, &cap, &ell, &half, &slice, &round];
     let Ok(tb) = Transform::new(vec::<R>(16), angle) else {
         sink_u32(0xdead);
         return;

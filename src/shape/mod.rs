@@ -58,6 +58,14 @@ pub trait SupportMap<R: Real> {
     /// shape, radius included. Relative tolerances are measured against it.
     fn bounding_radius(&self) -> R;
 
+    /// The square of [`bounding_radius`](Self::bounding_radius). A shape
+    /// that keeps it squared saves the intersection test a square root, and
+    /// a firmware that only tests polygons for overlap links none.
+    fn bounding_radius_squared(&self) -> R {
+        let r = self.bounding_radius();
+        r * r
+    }
+
     /// The radius the core is swept by. Zero for sharp shapes.
     fn radius(&self) -> R {
         R::ZERO
@@ -105,6 +113,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn bounding_radius(&self) -> R {
         (**self).bounding_radius()
+    }
+    fn bounding_radius_squared(&self) -> R {
+        (**self).bounding_radius_squared()
     }
     fn radius(&self) -> R {
         (**self).radius()

@@ -15,7 +15,9 @@ pub struct Polygon<R: Real, const N: usize> {
     reference: V2<R>,
     vertices: Vec<V2<R>, N>,
     center: V2<R>,
-    bounding_radius: R,
+    /// Squared, so a firmware that only tests polygons for overlap links no
+    /// square root.
+    bounding_radius_squared: R,
 }
 
 impl<R: Real, const N: usize> Polygon<R, N> {
@@ -24,40 +26,43 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     /// coordinates, repeated consecutive vertices, zero area, and any reflex
     /// turn or second winding. Collinear vertices on an edge are accepted.
     pub fn new(points: &[R::Vector]) -> Result<Self, Error> {
+        let mut polygon =
+            Self { reference: V2::zero(), vertices: Vec::new(), center: V2::zero(), bounding_radius_squared: R::ZERO };
+        polygon.fill(points)?;
+        Ok(polygon)
+    }
+
+    /// Validates `points` into the empty `self`, worked on in place (no
+    /// second vertex buffer on the stack).
+    #[inline(always)]
+    fn fill(&mut self, points: &[R::Vector]) -> Result<(), Error> {
         if points.len() < 3 {
             return Err(Error::TooFewVertices);
         }
         if points.len() > N {
             return Err(Error::OverCapacity);
         }
-        let mut world: Vec<V2<R>, N> = Vec::new();
+        let vertices = &mut self.vertices;
         for &p in points {
-            let p = check_point(V2::from_glam(p))?;
             // Capacity was checked above.
-            let _ = world.push(p);
+            let _ = vertices.push(check_point(V2::from_glam(p))?);
         }
-        let n = world.len();
-        for i in 0..n {
-            if cyclic(&world, i) == cyclic(&world, i + 1) {
-                return Err(Error::DuplicateVertex);
-            }
+        if convex_winding(vertices)? < 0 {
+            vertices.reverse();
         }
-        let winding = convex_winding(&world)?;
-        if winding < 0 {
-            world.reverse();
-        }
-        let reference = choose_reference(&world);
-        // Shifted in place: no second N-vertex buffer on the stack.
-        let mut vertices = world;
+        let reference = choose_reference(vertices);
         for p in vertices.iter_mut() {
             *p = *p - reference;
         }
-        let center = area_centroid(&vertices);
+        let center = area_centroid(vertices);
         let mut r2 = R::ZERO;
         for &v in vertices.iter() {
             r2 = r2.max((v - center).length_squared());
         }
-        Ok(Self { reference, vertices, center, bounding_radius: r2.sqrt() })
+        self.reference = reference;
+        self.center = center;
+        self.bounding_radius_squared = r2;
+        Ok(())
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
@@ -73,7 +78,8 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         let mut points: Vec<R::Vector, N> = Vec::new();
         for i in 0..count {
             let angle = R::from_f64(core::f64::consts::TAU * i as f64 / count as f64);
-            let _ = points.push(R::vector(radius * angle.cos(), radius * angle.sin()));
+            let (sin, cos) = angle.sin_cos();
+            let _ = points.push(R::vector(radius * cos, radius * sin));
         }
         Self::new(&points)
     }
@@ -116,17 +122,35 @@ pub(crate) fn choose_reference<R: Real>(points: &[V2<R>]) -> V2<R> {
     }
 }
 
-/// +1 for a counter-clockwise convex polygon, -1 for a clockwise one.
-/// Every turn must go the same way (collinear turns allowed) and the edge
-/// directions must wind once: a convex polygon's edge x-components change
-/// sign at most twice around the loop, a pentagram's more often.
+/// +1 for a counter-clockwise convex polygon, -1 for a clockwise one, in
+/// one pass over the edges. No edge may be empty, every turn must go the same
+/// way (collinear turns allowed) and the edge directions must wind once: a
+/// convex polygon's edge x- and y-components change sign at most twice
+/// around the loop, a pentagram's more often.
 fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
     let n = p.len();
     let (mut left, mut right) = (false, false);
-    for i in 0..n {
-        let turn = orientation(cyclic(p, i), cyclic(p, i + 1), cyclic(p, i + 2));
-        left |= turn > R::ZERO;
-        right |= turn < R::ZERO;
+    let mut changes = 0u32;
+    let mut last = [R::ZERO; 2];
+    // Edge n is edge 0 again: the sign changes close the loop.
+    for i in 0..=n {
+        let e = cyclic(p, i + 1) - cyclic(p, i);
+        if e.x == R::ZERO && e.y == R::ZERO {
+            return Err(Error::DuplicateVertex);
+        }
+        for (component, last) in [e.x, e.y].into_iter().zip(last.iter_mut()) {
+            if component != R::ZERO {
+                if *last != R::ZERO && (component > R::ZERO) != (*last > R::ZERO) {
+                    changes += 1;
+                }
+                *last = component;
+            }
+        }
+        if i < n {
+            let turn = orientation(cyclic(p, i), cyclic(p, i + 1), cyclic(p, i + 2));
+            left |= turn > R::ZERO;
+            right |= turn < R::ZERO;
+        }
     }
     if left && right {
         return Err(Error::NotConvex);
@@ -134,22 +158,8 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
     if !left && !right {
         return Err(Error::Degenerate);
     }
-    let sign_changes = |component: fn(V2<R>) -> R| {
-        let mut changes = 0;
-        let mut last = R::ZERO;
-        for i in 0..=n {
-            let e = cyclic(p, i + 1) - cyclic(p, i);
-            let c = component(e);
-            if c != R::ZERO {
-                if last != R::ZERO && (c > R::ZERO) != (last > R::ZERO) {
-                    changes += 1;
-                }
-                last = c;
-            }
-        }
-        changes
-    };
-    if sign_changes(|e| e.x) > 2 || sign_changes(|e| e.y) > 2 {
+    // At most two changes of each component's sign: four in all.
+    if changes > 4 {
         return Err(Error::NotConvex);
     }
     Ok(if left { 1 } else { -1 })
@@ -178,6 +188,15 @@ pub(crate) fn area_centroid<R: Real>(v: &[V2<R>]) -> V2<R> {
     }
 }
 
+/// A support index as a feature id, clamped below the capacity (where it is
+/// already): the clamp tells the compiler that ids of a polygon of fewer than
+/// 65535 vertices are never `NO_FEATURE`, so the paths for curved shapes (and
+/// their square roots) drop out of polygon-only code.
+#[inline(always)]
+fn vertex_id<const N: usize>(i: usize) -> u32 {
+    i.min(N.saturating_sub(1)) as u32
+}
+
 impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[inline]
     fn support(&self, direction: R::Vector) -> R::Vector {
@@ -186,18 +205,21 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[inline]
     fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
         let (i, v) = polytope_support::<R, N>(&self.vertices, V2::from_glam(direction));
-        (v.to_glam(), i as u32)
+        (v.to_glam(), vertex_id::<N>(i))
     }
     #[inline]
     fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
         let (i, v) = polytope_support_near::<R, N>(&self.vertices, V2::from_glam(direction), previous);
-        (v.to_glam(), i as u32)
+        (v.to_glam(), vertex_id::<N>(i))
     }
     fn center(&self) -> R::Vector {
         self.center.to_glam()
     }
     fn bounding_radius(&self) -> R {
-        self.bounding_radius
+        self.bounding_radius_squared.sqrt()
+    }
+    fn bounding_radius_squared(&self) -> R {
+        self.bounding_radius_squared
     }
     fn reference_point(&self) -> R::Vector {
         self.reference.to_glam()

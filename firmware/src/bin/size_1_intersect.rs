@@ -8,8 +8,8 @@ mod common;
 #[cortex_m_rt::entry]
 fn main() -> ! {
     let gjk = gjk2d::Gjk::<f32>::new();
-    if let Some(p) = common::polygons::<f32>() {
-        common::intersects(&gjk, &p.a, &p.b, &p.tb);
-    }
+    common::with_polygons::<f32>(|a, b, tb| {
+        common::intersects(&gjk, a, b, tb);
+    });
     loop {}
 }
