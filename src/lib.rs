@@ -52,6 +52,7 @@ mod result;
 pub mod shape;
 mod simplex;
 mod transform;
+mod trig;
 
 #[cfg(feature = "std")]
 mod batch;

@@ -55,8 +55,9 @@ pub trait Real:
     fn from_u32(value: u32) -> Self;
     fn sqrt(self) -> Self;
     fn abs(self) -> Self;
-    fn sin(self) -> Self;
-    fn cos(self) -> Self;
+    /// `(sin, cos)`. For f32 computed in f32 alone ([`crate::trig`]): libm's
+    /// `sinf`/`cosf` go through soft f64 on microcontrollers.
+    fn sin_cos(self) -> (Self, Self);
     fn atan2(self, x: Self) -> Self;
     fn is_finite(self) -> bool;
     /// Veltkamp's splitter, `2^ceil(p/2) + 1` for a `p`-bit significand: splits
@@ -87,7 +88,7 @@ pub trait Real:
 }
 
 macro_rules! impl_real {
-    ($t:ty, $vec:ty, $sqrt:path, $sin:path, $cos:path, $atan2:path, $splitter:expr, $max_coord:expr) => {
+    ($t:ty, $vec:ty, $sqrt:path, $sin_cos:path, $atan2:path, $splitter:expr, $max_coord:expr) => {
         impl Real for $t {
             type Vector = $vec;
             const ZERO: Self = 0.0;
@@ -120,12 +121,8 @@ macro_rules! impl_real {
                 <$t>::abs(self)
             }
             #[inline(always)]
-            fn sin(self) -> Self {
-                $sin(self)
-            }
-            #[inline(always)]
-            fn cos(self) -> Self {
-                $cos(self)
+            fn sin_cos(self) -> (Self, Self) {
+                $sin_cos(self)
             }
             #[inline(always)]
             fn atan2(self, x: Self) -> Self {
@@ -147,8 +144,15 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(f32, glam::Vec2, libm::sqrtf, libm::sinf, libm::cosf, libm::atan2f, 4097.0, 1.0e15);
-impl_real!(f64, glam::DVec2, libm::sqrt, libm::sin, libm::cos, libm::atan2, 134_217_729.0, 1.0e150);
+impl_real!(f32, glam::Vec2, libm::sqrtf, crate::trig::sin_cos_f32, libm::atan2f, 4097.0, 1.0e15);
+impl_real!(f64, glam::DVec2, libm::sqrt, sin_cos_f64, libm::atan2, 134_217_729.0, 1.0e150);
+
+/// f64 keeps libm's correctly reduced sine and cosine: f64 code pays for soft
+/// double arithmetic anyway where there is no double FPU.
+#[inline(always)]
+fn sin_cos_f64(x: f64) -> (f64, f64) {
+    (libm::sin(x), libm::cos(x))
+}
 
 /// The internal 2D vector, generic over the scalar.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -31,8 +31,7 @@ impl<R: Real> Transform<R> {
         }
         let mut t = Self::from_translation(translation)?;
         if angle != R::ZERO {
-            t.cos = angle.cos();
-            t.sin = angle.sin();
+            (t.sin, t.cos) = angle.sin_cos();
         }
         Ok(t)
     }

@@ -25,7 +25,7 @@ impl<R: Real> Slice<R> {
             return Err(Error::AngleOutOfRange);
         }
         let half = theta * R::HALF;
-        let (c, s) = (half.cos(), half.sin());
+        let (s, c) = half.sin_cos();
         // Centroid of a sector: 2 r sin(a) / (3 a) from the apex. sin(a)/a
         // tends to 1; a subnormal theta can halve to exactly 0 (0/0).
         let sinc = if half > R::ZERO { s / half } else { R::ONE };

@@ -1,0 +1,135 @@
+//! Sine and cosine of an f32 angle in f32 arithmetic only.
+//!
+//! libm's `sinf`/`cosf` reduce the angle in f64: on a Cortex-M4F (single
+//! precision FPU) or an M0 that links about 5 KB of soft double arithmetic
+//! (`rem_pio2f`, `__muldf3`, `__adddf3`, ...) for one rotation. These stay in
+//! f32 and take a few hundred bytes, and being plain IEEE operations without
+//! fused multiply-adds, they give the same bits on every target.
+//!
+//! Accuracy: within 2 ulp of the exact value for |angle| up to 1e5 rad (the
+//! reduction by pi/2 is exact there: pi/2 is split into three parts of 8
+//! significant bits, whose products with a 16-bit quadrant count are exact,
+//! and a fourth that carries the rest). Beyond, the reduction rounds like one
+//! operation on the angle itself, whose own spacing (ulp) is then 0.008 rad
+//! or more; the result is still a unit rotation within that spacing.
+
+/// pi/2 in four parts: three of 8 significant bits, then the rest.
+const PIO2: [f32; 4] = [1.5703125, 4.825592e-4, 1.2665987e-6, 9.920936e-10];
+const FRAC_2_PI: f32 = core::f32::consts::FRAC_2_PI;
+/// 2^23: above it every f32 is an integer; adding and subtracting it (with
+/// the sign of the value) rounds to the nearest integer below it.
+const TWO_POW_23: f32 = 8_388_608.0;
+/// How far from 0 the reduced angle can be: pi/4, plus the rounding of the
+/// quadrant count (`x * 2/pi` rounds to a spacing of up to 1 below 2^24).
+const REDUCED_BOUND: f32 = 1.6;
+
+/// `(sin x, cos x)`; a non-finite `x` gives `(0, 1)` (callers reject it first).
+pub(crate) fn sin_cos_f32(x: f32) -> (f32, f32) {
+    if !x.is_finite() {
+        return (0.0, 1.0);
+    }
+    let y = x * FRAC_2_PI;
+    let k = if y.abs() < TWO_POW_23 {
+        let m = TWO_POW_23.copysign(y);
+        (y + m) - m
+    } else {
+        y
+    };
+    let mut r = x;
+    for part in PIO2 {
+        r -= k * part;
+    }
+    // Only for angles beyond 2^24 * pi/2 can r leave the kernels' range;
+    // keep it there (and the result finite).
+    let r = r.clamp(-REDUCED_BOUND, REDUCED_BOUND);
+    let (s, c) = (sin_kernel(r), cos_kernel(r));
+    // k's two low bits: the quadrant. `as i64` saturates, and huge k are even.
+    match (k as i64) & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+/// sin on [-1.6, 1.6]: the Taylor series to r^13 (the next term is below
+/// 1e-9 there, under f32's rounding).
+fn sin_kernel(r: f32) -> f32 {
+    const S: [f32; 6] =
+        [-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0, -1.0 / 39_916_800.0, 1.0 / 6_227_020_800.0];
+    let z = r * r;
+    r + r * z * (S[0] + z * (S[1] + z * (S[2] + z * (S[3] + z * (S[4] + z * S[5])))))
+}
+
+/// cos on [-1.6, 1.6]: the series to r^14 (next term below 1e-10).
+fn cos_kernel(r: f32) -> f32 {
+    const C: [f32; 6] =
+        [1.0 / 24.0, -1.0 / 720.0, 1.0 / 40_320.0, -1.0 / 3_628_800.0, 1.0 / 479_001_600.0, -1.0 / 87_178_291_200.0];
+    let z = r * r;
+    let tail = z * z * (C[0] + z * (C[1] + z * (C[2] + z * (C[3] + z * (C[4] + z * C[5])))));
+    let half = 0.5 * z;
+    // 1 - z/2 rounds once; the tail is added to what it rounded away.
+    let w = 1.0 - half;
+    w + (((1.0 - w) - half) + tail)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::sin_cos_f32;
+
+    /// Worst error in units of 2^-24 (half an ulp of 1), against f64 libm
+    /// (correctly rounded to well below that).
+    fn worst_error(angles: impl Iterator<Item = f32>) -> f64 {
+        let mut worst = 0.0f64;
+        for x in angles {
+            let (s, c) = sin_cos_f32(x);
+            let (es, ec) = (libm::sin(x as f64), libm::cos(x as f64));
+            worst = worst.max((s as f64 - es).abs()).max((c as f64 - ec).abs());
+        }
+        worst * 16_777_216.0
+    }
+
+    #[test]
+    fn accurate_to_the_last_bits_up_to_1e5() {
+        // Every 997th float in [0, 1e5] and their negatives, plus the quadrant
+        // boundaries, where reduction errors would show.
+        let step = 997u32;
+        let top = 1.0e5f32.to_bits();
+        let grid = (0..top / step).map(|i| f32::from_bits(i * step));
+        let err = worst_error(grid.clone().chain(grid.map(|x| -x)));
+        assert!(err <= 2.0, "worst error {err} x 2^-24");
+        let boundaries = (1..20_000).map(|k| k as f32 * core::f32::consts::FRAC_PI_4);
+        let err = worst_error(boundaries);
+        assert!(err <= 2.0, "worst error at multiples of pi/4: {err} x 2^-24");
+    }
+
+    #[test]
+    fn exact_where_it_must_be() {
+        assert_eq!(sin_cos_f32(0.0), (0.0, 1.0));
+        assert_eq!(sin_cos_f32(-0.0).1, 1.0);
+    }
+
+    #[test]
+    fn huge_and_bad_angles_give_unit_rotations() {
+        for x in [1.0e6f32, -3.3e7, 1.0e20, f32::MAX, -f32::MAX, 8.5e6] {
+            let (s, c) = sin_cos_f32(x);
+            let norm = (s as f64).hypot(c as f64);
+            assert!((norm - 1.0).abs() < 1e-6, "{x}: ({s}, {c})");
+        }
+        assert_eq!(sin_cos_f32(f32::NAN), (0.0, 1.0));
+        assert_eq!(sin_cos_f32(f32::INFINITY), (0.0, 1.0));
+    }
+
+    #[test]
+    fn beyond_1e5_within_the_angle_spacing() {
+        // The angle's own spacing there is 2^-7 or more; the result must be
+        // within one spacing of the exact rotation.
+        for i in 0..2000 {
+            let x = 1.0e5f32 + i as f32 * 5113.7;
+            let (s, c) = sin_cos_f32(x);
+            let ulp = (f32::from_bits(x.to_bits() + 1) - x) as f64;
+            let (es, ec) = (libm::sin(x as f64), libm::cos(x as f64));
+            assert!((s as f64 - es).abs() <= ulp && (c as f64 - ec).abs() <= ulp, "{x}");
+        }
+    }
+}
