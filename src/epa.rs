@@ -47,6 +47,10 @@ impl<R: Real, const N: usize> Epa<R, N> {
 }
 
 impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
+    // Not inlined: the polytope and EPA's working values then live in this
+    // frame alone, not in one frame with GJK's (the peak stack of a
+    // penetration query on a microcontroller).
+    #[inline(never)]
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
         let mut polytope = heapless::Vec::<Corner<R>, N>::new();
         expand(&mut polytope, &self.config, difference, simplex)
