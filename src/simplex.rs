@@ -12,7 +12,7 @@
 //! simplex stays small, which is what its speed and stack depth come from.
 
 use crate::minkowski::{MinkowskiVertex, NO_ID};
-use crate::real::{cyclic, Real, V2};
+use crate::real::{Real, V2};
 
 /// What a simplex vertex carries besides its Minkowski point.
 pub(crate) trait Payload<R>: Copy {
@@ -102,18 +102,63 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     /// vertex is copied more than once (stack depth on microcontrollers).
     #[inline]
     pub fn solve(&mut self) -> Closest<R> {
-        let points = [self.verts[0].w, self.verts[1].w, self.verts[2].w];
-        match locate(points, self.len) {
-            Location::Vertex => {
+        match self.len {
+            2 => Closest::Point(self.reduce_to_segment(0, 1)),
+            3 => self.solve_triangle(),
+            _ => {
                 self.weights = [R::ONE, R::ZERO, R::ZERO];
-                Closest::Point(points[0])
+                Closest::Point(self.verts[0].w)
             }
-            Location::Edge { edge: (i, j), foot, v } => {
+        }
+    }
+
+    fn solve_triangle(&mut self) -> Closest<R> {
+        let [wa, wb, wc] = [self.verts[0].w, self.verts[1].w, self.verts[2].w];
+        let area = (wb - wa).cross(wc - wa);
+        // The origin is on the inner side of edge i->j when cross(wi, wj)
+        // has the sign of the area (zero counts as inside: touching).
+        let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
+        let outside = |side: R| {
+            if area > R::ZERO {
+                side < R::ZERO
+            } else if area < R::ZERO {
+                side > R::ZERO
+            } else {
+                true
+            }
+        };
+        if area != R::ZERO && !sides.iter().any(|&s| outside(s)) {
+            return Closest::Enclosed;
+        }
+        // The closest point lies on an edge the origin is outside of; a
+        // degenerate (flat) triangle tries all three.
+        const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
+        let ws = [wa, wb, wc];
+        let mut best: Option<Candidate<R>> = None;
+        for (&edge, &side) in EDGES.iter().zip(sides.iter()) {
+            if outside(side) {
+                let (foot, v) = segment_foot(ws[edge.0], ws[edge.1]);
+                let vv = v.length_squared();
+                if best.as_ref().is_none_or(|b| vv < b.vv) {
+                    best = Some(Candidate { edge, foot, v, vv });
+                }
+            }
+        }
+        match best {
+            Some(Candidate { edge: (i, j), foot, v, .. }) => {
                 self.reduce(i, j, foot);
                 Closest::Point(v)
             }
-            Location::Enclosed => Closest::Enclosed,
+            None => Closest::Enclosed,
         }
+    }
+
+    /// Reduces to the vertex or edge of `verts[i]`-`verts[j]` holding the
+    /// closest point to the origin, and returns that point.
+    fn reduce_to_segment(&mut self, i: usize, j: usize) -> V2<R> {
+        let (foot, v) = segment_foot(self.verts[i.min(2)].w, self.verts[j.min(2)].w);
+        self.reduce(i, j, foot);
+        v
     }
 
     /// Keeps what `foot` says of the segment `verts[i]`-`verts[j]`.
@@ -204,65 +249,6 @@ impl<R: Real, P> Simplex<R, P> {
         let u = V2::new(v.x / m, v.y / m);
         let len = u.length();
         Some((m * len, V2::new(u.x / len, u.y / len)))
-    }
-}
-
-/// Where the closest point of a simplex to the origin lies.
-enum Location<R> {
-    /// At the single vertex.
-    Vertex,
-    /// On the edge of vertices `edge`, where `foot` says; `v` is the point.
-    Edge { edge: (usize, usize), foot: Foot<R>, v: V2<R> },
-    /// The origin lies inside the triangle or on its boundary.
-    Enclosed,
-}
-
-/// The geometry of [`Simplex::solve`], on the points alone: one copy for
-/// every payload (a firmware that asks for both the intersection test and
-/// the distance links it once, not twice).
-#[inline(never)]
-fn locate<R: Real>(points: [V2<R>; 3], len: usize) -> Location<R> {
-    let [wa, wb, wc] = points;
-    match len {
-        2 => {
-            let (foot, v) = segment_foot(wa, wb);
-            return Location::Edge { edge: (0, 1), foot, v };
-        }
-        3 => {}
-        _ => return Location::Vertex,
-    }
-    let area = (wb - wa).cross(wc - wa);
-    // The origin is on the inner side of edge i->j when cross(wi, wj)
-    // has the sign of the area (zero counts as inside: touching).
-    let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
-    let outside = |side: R| {
-        if area > R::ZERO {
-            side < R::ZERO
-        } else if area < R::ZERO {
-            side > R::ZERO
-        } else {
-            true
-        }
-    };
-    if area != R::ZERO && !sides.iter().any(|&s| outside(s)) {
-        return Location::Enclosed;
-    }
-    // The closest point lies on an edge the origin is outside of; a
-    // degenerate (flat) triangle tries all three.
-    const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
-    let mut best: Option<Candidate<R>> = None;
-    for (&edge, &side) in EDGES.iter().zip(sides.iter()) {
-        if outside(side) {
-            let (foot, v) = segment_foot(cyclic(&points, edge.0), cyclic(&points, edge.1));
-            let vv = v.length_squared();
-            if best.as_ref().is_none_or(|b| vv < b.vv) {
-                best = Some(Candidate { edge, foot, v, vv });
-            }
-        }
-    }
-    match best {
-        Some(Candidate { edge, foot, v, .. }) => Location::Edge { edge, foot, v },
-        None => Location::Enclosed,
     }
 }
 
