@@ -55,7 +55,7 @@ pub trait Real:
     fn from_u32(value: u32) -> Self;
     fn sqrt(self) -> Self;
     fn abs(self) -> Self;
-    /// `(sin, cos)`. For f32 computed in f32 alone ([`crate::trig`]): libm's
+    /// `(sin, cos)`. For f32 computed in f32 alone (module `trig`): libm's
     /// `sinf`/`cosf` go through soft f64 on microcontrollers.
     fn sin_cos(self) -> (Self, Self);
     fn atan2(self, x: Self) -> Self;

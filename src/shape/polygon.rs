@@ -26,23 +26,16 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     /// coordinates, repeated consecutive vertices, zero area, and any reflex
     /// turn or second winding. Collinear vertices on an edge are accepted.
     pub fn new(points: &[R::Vector]) -> Result<Self, Error> {
-        let mut polygon =
-            Self { reference: V2::zero(), vertices: Vec::new(), center: V2::zero(), bounding_radius_squared: R::ZERO };
-        polygon.fill(points)?;
-        Ok(polygon)
-    }
-
-    /// Validates `points` into the empty `self`, worked on in place (no
-    /// second vertex buffer on the stack).
-    #[inline(always)]
-    fn fill(&mut self, points: &[R::Vector]) -> Result<(), Error> {
         if points.len() < 3 {
             return Err(Error::TooFewVertices);
         }
         if points.len() > N {
             return Err(Error::OverCapacity);
         }
-        let vertices = &mut self.vertices;
+        // Validated where it is built: no second vertex buffer on the stack.
+        let mut polygon =
+            Self { reference: V2::zero(), vertices: Vec::new(), center: V2::zero(), bounding_radius_squared: R::ZERO };
+        let vertices = &mut polygon.vertices;
         for &p in points {
             // Capacity was checked above.
             let _ = vertices.push(check_point(V2::from_glam(p))?);
@@ -59,10 +52,10 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         for &v in vertices.iter() {
             r2 = r2.max((v - center).length_squared());
         }
-        self.reference = reference;
-        self.center = center;
-        self.bounding_radius_squared = r2;
-        Ok(())
+        polygon.reference = reference;
+        polygon.center = center;
+        polygon.bounding_radius_squared = r2;
+        Ok(polygon)
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
@@ -158,7 +151,9 @@ fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
     if !left && !right {
         return Err(Error::Degenerate);
     }
-    // At most two changes of each component's sign: four in all.
+    // Each component of a closed loop's edges changes sign at least twice,
+    // and every one of them 2k times when the edges wind k times: more than
+    // four changes in all is a second winding.
     if changes > 4 {
         return Err(Error::NotConvex);
     }
