@@ -32,7 +32,7 @@
 //! # Ok::<(), gjk2d::Error>(())
 //! ```
 #![cfg_attr(not(feature = "std"), no_std)]
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)]
 #![warn(missing_debug_implementations)]
 
 #[cfg(feature = "std")]
@@ -45,6 +45,7 @@ mod detector;
 mod epa;
 mod error;
 mod gjk;
+mod hw_sqrt;
 mod minkowski;
 mod ray;
 mod real;

@@ -60,6 +60,8 @@ pub trait Real:
     fn sin_cos(self) -> (Self, Self);
     fn atan2(self, x: Self) -> Self;
     fn is_finite(self) -> bool;
+    /// The sign bit (set for -0.0 too).
+    fn is_sign_negative(self) -> bool;
     /// Veltkamp's splitter, `2^ceil(p/2) + 1` for a `p`-bit significand: splits
     /// a value into two halves whose products are exact (Dekker's
     /// two-product), so exact predicates need no fma. An fma is software on
@@ -133,6 +135,10 @@ macro_rules! impl_real {
                 <$t>::is_finite(self)
             }
             #[inline(always)]
+            fn is_sign_negative(self) -> bool {
+                <$t>::is_sign_negative(self)
+            }
+            #[inline(always)]
             fn vector(x: Self, y: Self) -> Self::Vector {
                 <$vec>::new(x, y)
             }
@@ -144,7 +150,7 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(f32, glam::Vec2, libm::sqrtf, crate::trig::sin_cos_f32, libm::atan2f, 4097.0, 1.0e15);
+impl_real!(f32, glam::Vec2, crate::hw_sqrt::sqrtf, crate::trig::sin_cos_f32, libm::atan2f, 4097.0, 1.0e15);
 impl_real!(f64, glam::DVec2, libm::sqrt, sin_cos_f64, libm::atan2, 134_217_729.0, 1.0e150);
 
 /// f64 keeps libm's correctly reduced sine and cosine: f64 code pays for soft
