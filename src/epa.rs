@@ -57,13 +57,38 @@ impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
     }
 }
 
-/// A polytope vertex and the distance of the edge that starts at it.
+/// A polytope vertex and the distance of the edge that starts at it, in 12
+/// bytes (f32): 32 of them are the largest thing on a microcontroller's stack
+/// during a penetration query.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Corner<R> {
     w: V2<R>,
-    id: u32,
-    /// Distance from the origin to the line of the edge to the next corner.
-    edge_distance: R,
+    /// Distance from the origin to the line of the edge to the next corner,
+    /// never negative, so its sign bit is free to say whether `w` is a point
+    /// of a curve (set) or a vertex of both cores (clear): all the polish
+    /// needs to know of the support id.
+    signed_distance: R,
+}
+
+impl<R: Real> Corner<R> {
+    fn new(w: V2<R>, id: u32, edge_distance: R) -> Self {
+        let mut corner = Self { w, signed_distance: if id == NO_ID { -R::ZERO } else { R::ZERO } };
+        corner.set_edge_distance(edge_distance);
+        corner
+    }
+    #[inline(always)]
+    fn edge_distance(&self) -> R {
+        self.signed_distance.abs()
+    }
+    #[inline(always)]
+    fn on_curve(&self) -> bool {
+        self.signed_distance.is_sign_negative()
+    }
+    #[inline(always)]
+    fn set_edge_distance(&mut self, d: R) {
+        let d = d.abs();
+        self.signed_distance = if self.on_curve() { -d } else { d };
+    }
 }
 
 /// Growable storage for the polytope: inline (heapless) or, with `std`, a
@@ -157,7 +182,7 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
 }
 
 fn corner<R: Real>(s: &SupportPoint<R>) -> Corner<R> {
-    Corner { w: V2::from_glam(s.point), id: s.id, edge_distance: R::ZERO }
+    Corner::new(V2::from_glam(s.point), s.id, R::ZERO)
 }
 
 pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
@@ -174,7 +199,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     // simplex that only touches the origin (a point or an edge) is widened
     // with supports along its normals.
     polytope.clear_all();
-    match simplex {
+    // One call of `seed_from_edge`, so it is inlined and its working values
+    // share this frame's slots (the peak stack on a microcontroller).
+    let edge_seed = match simplex {
         [a, b, c] => {
             let (a, b, c) = (corner(a), corner(b), corner(c));
             let ccw = (b.w - a.w).cross(c.w - a.w) >= R::ZERO;
@@ -182,16 +209,20 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             for (i, c) in order.into_iter().enumerate() {
                 polytope.insert_at(i, c);
             }
+            None
         }
-        [a, b] => seed_from_edge(polytope, corner(a), corner(b), &support, &mut iterations),
+        [a, b] => Some((corner(a), corner(b))),
         [a] => {
             let a = corner(a);
             let b = support(V2::new(R::ONE, R::ZERO));
             let b = if b.w == a.w { support(V2::new(-R::ONE, R::ZERO)) } else { b };
             iterations += 1;
-            seed_from_edge(polytope, a, b, &support, &mut iterations)
+            Some((a, b))
         }
-        _ => {}
+        _ => None,
+    };
+    if let Some((a, b)) = edge_seed {
+        seed_from_edge(polytope, a, b, &support, &mut iterations);
     }
     if polytope.items().len() < 3 {
         // The Minkowski difference is flat (e.g. parallel segments): it has
@@ -207,7 +238,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     for i in 0..n {
         let q = cyclic(polytope.items(), i + 1).w;
         if let Some(c) = polytope.items_mut().get_mut(i) {
-            c.edge_distance = edge(c.w, q).0;
+            c.set_edge_distance(edge(c.w, q).0);
         }
     }
 
@@ -218,11 +249,11 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     let (closest, lower, status) = loop {
         let items = polytope.items();
         let n = items.len();
-        let (mut i, mut lower) = (0, cyclic(items, 0).edge_distance);
+        let (mut i, mut lower) = (0, cyclic(items, 0).edge_distance());
         for (k, c) in items.iter().enumerate().skip(1) {
-            if c.edge_distance < lower {
+            if c.edge_distance() < lower {
                 i = k;
-                lower = c.edge_distance;
+                lower = c.edge_distance();
             }
         }
         let j = if i + 1 >= n { 0 } else { i + 1 };
@@ -242,11 +273,14 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             upper = reach;
             best = normal;
         }
-        let repeated = w.id != NO_ID && (w.id == p.id || w.id == q.id);
+        // A support equal to an end of the edge: exactly no progress (equal
+        // vertex ids give equal points, computed the same way).
+        let repeated = w.w == p.w || w.w == q.w;
         if repeated || upper - lower <= tolerance {
             return estimate(best, upper, (upper - lower).max(R::ZERO), iterations, Status::Converged);
         }
-        let new = Corner { w: w.w, id: w.id, edge_distance: edge(w.w, q.w).0 };
+        let mut new = w;
+        new.set_edge_distance(edge(w.w, q.w).0);
         if !polytope.insert_at(j.max(i + 1), new) {
             // Full: make room where the polytope no longer matters, then
             // look again (the support is recomputed, the bounds stand).
@@ -256,7 +290,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             continue;
         }
         if let Some(c) = polytope.items_mut().get_mut(i) {
-            c.edge_distance = edge(p.w, w.w).0;
+            c.set_edge_distance(edge(p.w, w.w).0);
         }
     };
     finish_curved(polytope, closest, &support, lower, (upper, best), tolerance, iterations, status)
@@ -298,7 +332,7 @@ fn finish_curved<R: Real, S: Storage<R>>(
     }
     let (p, q) = (cyclic(items, closest), cyclic(items, closest + 1));
     let (_, normal) = edge(p.w, q.w);
-    if p.id != NO_ID && q.id != NO_ID {
+    if !p.on_curve() && !q.on_curve() {
         return fallback;
     }
     let slope = |u: V2<R>| support(u).w.dot(u.perp());
@@ -402,7 +436,7 @@ fn prune<R: Real, S: Storage<R>>(polytope: &mut S, closest: usize, upper: R) -> 
     let n = n - 1;
     let before = (k + n - 1) % n.max(1);
     if let Some(c) = polytope.items_mut().get_mut(before) {
-        c.edge_distance = chord;
+        c.set_edge_distance(chord);
     }
     true
 }
