@@ -297,5 +297,5 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
 /// A simplex vertex for the ray cast: the ray point minus a shape point,
 /// which it keeps (as `b`) because the ray point moves.
 fn vertex<R: Real>(x: V2<R>, p: V2<R>) -> Vertex<R, Witness<R>> {
-    Vertex { w: x - p, id: NO_ID, payload: Witness { a: V2::zero(), b: p } }
+    Vertex { w: x - p, id: NO_ID, payload: Witness { a: V2::zero(), b: p, weight: R::ONE } }
 }

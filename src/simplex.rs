@@ -17,24 +17,36 @@ use crate::real::{Real, V2};
 /// What a simplex vertex carries besides its Minkowski point.
 pub(crate) trait Payload<R>: Copy {
     fn from_vertex(v: &MinkowskiVertex<R>) -> Self;
+    /// The vertex's barycentric weight in the closest point: kept only where
+    /// closest points are wanted, so the other queries neither store nor
+    /// compute it.
+    fn set_weight(&mut self, weight: R);
 }
 
 impl<R> Payload<R> for () {
     #[inline(always)]
     fn from_vertex(_: &MinkowskiVertex<R>) -> Self {}
+    #[inline(always)]
+    fn set_weight(&mut self, _: R) {}
 }
 
-/// The shape points a Minkowski point is the difference of.
+/// The shape points a Minkowski point is the difference of, and its weight
+/// in the closest point.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Witness<R> {
     pub a: V2<R>,
     pub b: V2<R>,
+    pub weight: R,
 }
 
-impl<R: Copy> Payload<R> for Witness<R> {
+impl<R: Real> Payload<R> for Witness<R> {
     #[inline(always)]
     fn from_vertex(v: &MinkowskiVertex<R>) -> Self {
-        Witness { a: v.a, b: v.b }
+        Witness { a: v.a, b: v.b, weight: R::ONE }
+    }
+    #[inline(always)]
+    fn set_weight(&mut self, weight: R) {
+        self.weight = weight;
     }
 }
 
@@ -55,8 +67,6 @@ impl<R: Real, P: Payload<R>> Vertex<R, P> {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Simplex<R, P> {
     verts: [Vertex<R, P>; 3],
-    /// Barycentric weights of the closest point.
-    weights: [R; 3],
     len: usize,
 }
 
@@ -70,7 +80,7 @@ pub(crate) enum Closest<R> {
 
 impl<R: Real, P: Payload<R>> Simplex<R, P> {
     pub fn new(first: Vertex<R, P>) -> Self {
-        Self { verts: [first; 3], weights: [R::ONE, R::ZERO, R::ZERO], len: 1 }
+        Self { verts: [first; 3], len: 1 }
     }
 
     pub fn vertices(&self) -> impl Iterator<Item = &Vertex<R, P>> {
@@ -106,7 +116,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
             2 => Closest::Point(self.reduce_to_segment(0, 1)),
             3 => self.solve_triangle(),
             _ => {
-                self.weights = [R::ONE, R::ZERO, R::ZERO];
+                self.verts[0].payload.set_weight(R::ONE);
                 Closest::Point(self.verts[0].w)
             }
         }
@@ -184,7 +194,8 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
                 }
                 // Divided, not multiplied by 1/sum: 1/sum overflows for a
                 // subnormal sum (coordinates near 1e-154 in f64).
-                self.weights = [first / sum, second / sum, R::ZERO];
+                self.verts[0].payload.set_weight(first / sum);
+                self.verts[1].payload.set_weight(second / sum);
                 self.len = 2;
             }
         }
@@ -196,7 +207,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
             2 => self.verts[0] = self.verts[2],
             _ => {}
         }
-        self.weights = [R::ONE, R::ZERO, R::ZERO];
+        self.verts[0].payload.set_weight(R::ONE);
         self.len = 1;
     }
 }
@@ -206,9 +217,9 @@ impl<R: Real> Simplex<R, Witness<R>> {
     pub fn witness_points(&self) -> (V2<R>, V2<R>) {
         let mut pa = V2::zero();
         let mut pb = V2::zero();
-        for (v, &w) in self.vertices().zip(self.weights.iter()) {
-            pa = pa + v.payload.a * w;
-            pb = pb + v.payload.b * w;
+        for v in self.vertices() {
+            pa = pa + v.payload.a * v.payload.weight;
+            pb = pb + v.payload.b * v.payload.weight;
         }
         (pa, pb)
     }
