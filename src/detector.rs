@@ -8,7 +8,7 @@
 use crate::config::GjkConfig;
 use crate::epa::{Epa, PenetrationSolver};
 use crate::gjk::{core_distance, intersect, CoreProximity, CoreSeparation};
-use crate::minkowski::{Pair, SupportPoint};
+use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation};
@@ -85,16 +85,11 @@ impl<R: Real, P> Gjk<R, P> {
         P: PenetrationSolver<R>,
     {
         let pair = Pair::new(a, ta, b, tb);
-        // No closest points needed here: the simplex carries nothing else.
-        match core_distance::<_, _, _, ()>(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon())
-        {
-            CoreProximity::Overlapping { simplex, iterations } => {
-                let mut points = [SupportPoint { point: R::vector(R::ZERO, R::ZERO), id: 0 }; 3];
-                let mut len = 0;
-                for (p, v) in points.iter_mut().zip(simplex.vertices()) {
-                    *p = SupportPoint { point: v.w.to_glam(), id: v.id };
-                    len += 1;
-                }
+        // GJK and the closed form for rounded shapes in functions of their
+        // own: this frame keeps only the pair and GJK's final simplex while
+        // the solver's polytope is on the stack.
+        match core_proximity(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            CoreProximity::Overlapping { points, len, iterations } => {
                 let estimate = self.solver.solve(&pair, points.get(..len).unwrap_or(&[]));
                 Some(Penetration {
                     normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
@@ -104,24 +99,7 @@ impl<R: Real, P> Gjk<R, P> {
                     status: estimate.status,
                 })
             }
-            CoreProximity::Separated(core) => {
-                // A closest point too small to give a direction is touching.
-                let fallback = pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO));
-                let (distance, normal) =
-                    core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
-                let error_bound = (distance - core.lower_bound).max(R::ZERO);
-                let certain = core.status.is_converged() || core.lower_bound > pair.radius;
-                if distance > pair.radius && certain {
-                    return None;
-                }
-                Some(Penetration {
-                    normal: pair.to_world_vector(normal),
-                    depth: (pair.radius - distance).max(R::ZERO),
-                    error_bound,
-                    iterations: core.iterations,
-                    status: core.status,
-                })
-            }
+            CoreProximity::Separated(core) => rounded_overlap(&pair, &core),
         }
     }
 
@@ -163,6 +141,48 @@ impl<R: Real, P> Gjk<R, P> {
         };
         RayCast { outcome, ..local }
     }
+}
+
+/// GJK for the penetration query, which needs no closest points (the simplex
+/// carries nothing else). Not inlined on bare metal: GJK's working values are
+/// then gone from the stack before the penetration solver's polytope is
+/// pushed on it (the query's peak stack on a microcontroller).
+#[cfg_attr(target_os = "none", inline(never))]
+fn core_proximity<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreProximity<R, ()>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    core_distance(pair, max_iterations, epsilon)
+}
+
+/// The penetration of rounded shapes whose cores are apart, in closed form
+/// from the core distance; `None` when the shapes are certainly apart. Not
+/// inlined on bare metal: its working values would widen the frame below
+/// the solver's.
+#[cfg_attr(target_os = "none", inline(never))]
+fn rounded_overlap<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R, ()>) -> Option<Penetration<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    // A closest point too small to give a direction is touching.
+    let fallback = pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO));
+    let (distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
+    let error_bound = (distance - core.lower_bound).max(R::ZERO);
+    let certain = core.status.is_converged() || core.lower_bound > pair.radius;
+    if distance > pair.radius && certain {
+        return None;
+    }
+    Some(Penetration {
+        normal: pair.to_world_vector(normal),
+        depth: (pair.radius - distance).max(R::ZERO),
+        error_bound,
+        iterations: core.iterations,
+        status: core.status,
+    })
 }
 
 fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R, Witness<R>>) -> Option<Separation<R>>

@@ -10,7 +10,7 @@
 //! - no progress: `|v|` grew, so rounding has the last word;
 //! - the iteration limit, reported as such.
 
-use crate::minkowski::{Pair, NO_ID};
+use crate::minkowski::{Pair, SupportPoint, NO_ID};
 use crate::real::{Real, V2};
 use crate::result::Status;
 use crate::shape::SupportMap;
@@ -20,9 +20,10 @@ use crate::simplex::{Closest, Payload, Simplex, Vertex};
 /// `P` is what the simplex carries: [`Witness`] points when the caller
 /// wants closest points (distance), nothing when it does not (penetration).
 pub(crate) enum CoreProximity<R: Real, P> {
-    /// The cores overlap or touch; the simplex encloses (or touches) the
-    /// origin, EPA's starting point.
-    Overlapping { simplex: Simplex<R, P>, iterations: u32 },
+    /// The cores overlap or touch: the simplex's points enclose (or touch)
+    /// the origin, a penetration solver's starting point. Given as the
+    /// solver takes them, so the caller's frame needs no copy of its own.
+    Overlapping { points: [SupportPoint<R>; 3], len: usize, iterations: u32 },
     /// The cores are apart: closest point `v` of the Minkowski difference.
     Separated(CoreSeparation<R, P>),
 }
@@ -77,13 +78,14 @@ where
         // Ids before the reduction: a vertex dropped now and found again next
         // is a repeat too (Box2D compares with the saved vertices likewise).
         let before = simplex.ids();
-        let v = match simplex.solve() {
-            Closest::Enclosed => return CoreProximity::Overlapping { simplex, iterations },
-            Closest::Point(v) => v,
+        // Enclosed, or on the simplex: overlapping (one exit, one copy of
+        // the conversion).
+        let (v, vv) = match simplex.solve() {
+            Closest::Point(v) => (v, v.length_squared()),
+            Closest::Enclosed => (V2::zero(), R::ZERO),
         };
-        let vv = v.length_squared();
         if vv == R::ZERO {
-            return CoreProximity::Overlapping { simplex, iterations };
+            return overlapping(&simplex, iterations);
         }
         // |v| grew: only rounding can do that, and the simplex is as close as
         // it gets (within rounding of the previous one). It still takes the
@@ -113,6 +115,16 @@ where
         }
         simplex.push(Vertex::from_minkowski(&w));
     }
+}
+
+fn overlapping<R: Real, P: Payload<R>>(simplex: &Simplex<R, P>, iterations: u32) -> CoreProximity<R, P> {
+    let mut points = [SupportPoint { point: R::vector(R::ZERO, R::ZERO), id: 0 }; 3];
+    let mut len = 0;
+    for (p, v) in points.iter_mut().zip(simplex.vertices()) {
+        *p = SupportPoint { point: v.w.to_glam(), id: v.id };
+        len += 1;
+    }
+    CoreProximity::Overlapping { points, len, iterations }
 }
 
 fn separated<R: Real, P>(

@@ -61,7 +61,8 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     pub radius_b: R,
     /// B's center minus A's center: GJK's first search direction.
     pub centers: V2<R>,
-    frame: Transform<R>,
+    /// A's placement, for answers in world coordinates.
+    frame: &'s Transform<R>,
     reference_a: V2<R>,
     /// Each shape's last support id: where the next support starts looking.
     hint_a: Cell<u32>,
@@ -69,7 +70,7 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
 }
 
 impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s, R, A, B> {
-    pub fn new(a: &'s A, ta: &Transform<R>, b: &'s B, tb: &Transform<R>) -> Self {
+    pub fn new(a: &'s A, ta: &'s Transform<R>, b: &'s B, tb: &Transform<R>) -> Self {
         let reference_a = V2::from_glam(a.reference_point());
         let reference_b = V2::from_glam(b.reference_point());
         let (cos, sin, rotated) = if ta.cos == tb.cos && ta.sin == tb.sin {
@@ -89,7 +90,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             radius_b,
             radius: radius_a + radius_b,
             centers: V2::zero(),
-            frame: *ta,
+            frame: ta,
             reference_a,
             hint_a: Cell::new(NO_ID),
             hint_b: Cell::new(NO_ID),
