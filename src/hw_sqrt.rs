@@ -22,8 +22,10 @@ mod vsqrt {
         ".section .text.gjk2d_vsqrtf,\"ax\",%progbits",
         ".weak gjk2d_vsqrtf",
         ".type gjk2d_vsqrtf,%function",
-        ".thumb_func",
-        ".p2align 1",
+        // Assembled in the target's own instruction set (Thumb on Cortex-M,
+        // where a function symbol then gets the Thumb bit, ARM on Cortex-R/A):
+        // both encode these two instructions.
+        ".p2align 2",
         "gjk2d_vsqrtf:",
         // The assembler is not told the target's FPU; VFPv2 is the least
         // one with this instruction, which all later ones share.
