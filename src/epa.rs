@@ -34,7 +34,7 @@ pub trait PenetrationSolver<R: Real> {
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
-/// the stack (default 32: 640 bytes in f32, 1 KB in f64).
+/// the stack (default 32: 384 bytes in f32, 768 in f64).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Epa<R: Real, const N: usize = 32> {
     pub config: EpaConfig<R>,
