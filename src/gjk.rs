@@ -192,7 +192,9 @@ where
         if vw > R::ZERO && vw * vw > reach2 * vv {
             return (false, iterations, Status::Converged);
         }
-        if repeats(&before, w.id) || repeats(&simplex.ids(), w.id) {
+        // A vertex of the simplex before its reduction (which only drops
+        // vertices, so this covers the reduced simplex too): no progress.
+        if repeats(&before, w.id) {
             return (false, iterations, Status::Converged);
         }
         if w.id == NO_ID && vw > R::ZERO {
