@@ -71,10 +71,9 @@ pub(crate) struct Corner<R> {
 }
 
 impl<R: Real> Corner<R> {
-    fn new(w: V2<R>, id: u32, edge_distance: R) -> Self {
-        let mut corner = Self { w, signed_distance: if id == NO_ID { -R::ZERO } else { R::ZERO } };
-        corner.set_edge_distance(edge_distance);
-        corner
+    /// A support point, its edge distance not known yet (zero).
+    fn new(w: V2<R>, id: u32) -> Self {
+        Self { w, signed_distance: if id == NO_ID { -R::ZERO } else { R::ZERO } }
     }
     #[inline(always)]
     fn edge_distance(&self) -> R {
@@ -86,6 +85,7 @@ impl<R: Real> Corner<R> {
     }
     #[inline(always)]
     fn set_edge_distance(&mut self, d: R) {
+        // A distance that rounded to -0.0 must not flip the flag.
         let d = d.abs();
         self.signed_distance = if self.on_curve() { -d } else { d };
     }
@@ -182,7 +182,7 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
 }
 
 fn corner<R: Real>(s: &SupportPoint<R>) -> Corner<R> {
-    Corner::new(V2::from_glam(s.point), s.id, R::ZERO)
+    Corner::new(V2::from_glam(s.point), s.id)
 }
 
 pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
