@@ -41,6 +41,9 @@ use std::f64::consts::TAU;
 
 #[path = "common/geo.rs"]
 mod geo;
+#[macro_use]
+#[path = "common/placed.rs"]
+mod placed;
 use geo::{norm, sub, Geo, Pt};
 
 fn r32(x: f64) -> f64 {
@@ -166,45 +169,15 @@ macro_rules! property_suite {
                 })
             }
 
-            /// A shape placed by a transform, with its exact counterpart.
-            struct Placed {
-                geo: Geo,
-                shape: Box<dyn SupportMap<R>>,
-                tf: Transform<R>,
-                cs: (f64, f64),
-                t: Pt,
-                exact: ExactShape,
-            }
+            placed_shape!();
 
             impl Placed {
                 fn new(geo: Geo, tf: Transform<R>) -> Option<Self> {
                     let shape = build(&geo)?;
-                    let cs = (tf.cos() as f64, tf.sin() as f64);
-                    let t = pt(tf.translation());
-                    let exact = transform_shape(&geo.oracle(), cs.0, cs.1, t[0], t[1]);
-                    Some(Self { geo, shape, tf, cs, t, exact })
+                    Some(Self::from_parts(geo, shape, tf))
                 }
                 fn world(geo: Geo) -> Option<Self> {
                     Self::new(geo, Transform::IDENTITY)
-                }
-                fn map(&self, p: Pt) -> Pt {
-                    [self.cs.0 * p[0] - self.cs.1 * p[1] + self.t[0], self.cs.1 * p[0] + self.cs.0 * p[1] + self.t[1]]
-                }
-                fn center(&self) -> Pt {
-                    self.map(pt(self.shape.reference_point() + self.shape.center()))
-                }
-                fn radius(&self) -> f64 {
-                    self.shape.bounding_radius() as f64
-                }
-                fn support(&self, n: Pt) -> f64 {
-                    self.geo.support(self.cs, self.t, n)
-                }
-                fn identity(&self) -> bool {
-                    self.tf == Transform::IDENTITY
-                }
-                /// Largest world coordinate magnitude of the shape.
-                fn reach(&self) -> f64 {
-                    norm(self.t) + self.geo.extent() * 1.0001
                 }
             }
 

@@ -33,6 +33,9 @@ use gjk2d_oracle::{pair, ray as oracle_ray, transform_shape, ExactShape, RayStat
 
 #[path = "common/geo.rs"]
 mod geo;
+#[macro_use]
+#[path = "common/placed.rs"]
+mod placed;
 use geo::{norm, sub, Geo, Pt};
 
 macro_rules! stiff_suite {
@@ -129,37 +132,12 @@ macro_rules! stiff_suite {
                 Transform::new(v(t), angle as R).unwrap()
             }
 
-            struct Placed {
-                geo: Geo,
-                shape: Box<dyn SupportMap<R>>,
-                tf: Transform<R>,
-                cs: (f64, f64),
-                t: Pt,
-                exact: ExactShape,
-            }
+            placed_shape!();
 
             impl Placed {
                 fn new(geo: &Geo, tf: Transform<R>) -> Self {
                     let shape = build(geo).unwrap_or_else(|e| panic!("test shape rejected ({e}): {}", geo.describe()));
-                    let cs = (tf.cos() as f64, tf.sin() as f64);
-                    let t = pt(tf.translation());
-                    let exact = transform_shape(&geo.oracle(), cs.0, cs.1, t[0], t[1]);
-                    Self { geo: geo.clone(), shape, tf, cs, t, exact }
-                }
-                fn map(&self, p: Pt) -> Pt {
-                    [self.cs.0 * p[0] - self.cs.1 * p[1] + self.t[0], self.cs.1 * p[0] + self.cs.0 * p[1] + self.t[1]]
-                }
-                fn center(&self) -> Pt {
-                    self.map(pt(self.shape.reference_point() + self.shape.center()))
-                }
-                fn radius(&self) -> f64 {
-                    self.shape.bounding_radius() as f64
-                }
-                fn support(&self, n: Pt) -> f64 {
-                    self.geo.support(self.cs, self.t, n)
-                }
-                fn reach(&self) -> f64 {
-                    norm(self.t) + self.geo.extent() * 1.0001
+                    Self::from_parts(geo.clone(), shape, tf)
                 }
             }
 
