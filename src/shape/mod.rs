@@ -210,7 +210,12 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     start: u32,
 ) -> (usize, V2<R>) {
     const MAX_WALK: usize = 3;
-    if (start as usize) < vertices.len() {
+    // Up to this capacity the polygon is scanned: on the Cortex-M4F that
+    // takes fewer instructions than the walk for 4 to 6 vertices (1332 -> 1172
+    // per overlapping intersection test) and saves 0.4 KB of flash. On x86-64
+    // the walk is faster from about 8 vertices, so larger capacities walk.
+    const SCAN_ONLY_MAX: usize = 8;
+    if N > SCAN_ONLY_MAX && (start as usize) < vertices.len() {
         if let (k, true) = hill_climb(vertices, d, start as usize, MAX_WALK) {
             return (k, at(vertices, k));
         }
