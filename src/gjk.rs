@@ -70,7 +70,7 @@ where
     // How close the bounds must be for a repeat of a just-dropped vertex to
     // end the loop (see below): rounding, or the tolerance if larger.
     let repeat_gap = (R::from_u32(16) * R::EPSILON * scale).max(tolerance);
-    let mut simplex = Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
+    let mut simplex = Simplex::new(Vertex::from_minkowski(&pair.support_shared(first_direction(pair.centers))));
     let mut lower_bound = R::ZERO;
     let mut previous = R::INFINITY;
     let mut iterations = 1;
@@ -97,7 +97,7 @@ where
         if !stalled && iterations >= max_iterations {
             return separated(simplex, v, lower_bound, iterations, Status::IterationLimit);
         }
-        let w = pair.support(-v);
+        let w = pair.support_shared(-v);
         iterations += 1;
         let length = vv.sqrt();
         lower_bound = lower_bound.max(v.dot(w.w) / length);

@@ -139,7 +139,13 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
 /// directions beyond. `N` is the capacity: for small ones the search is not
 /// even compiled in. No indexing can panic: an empty slice gives vertex 0 at
 /// the origin.
-#[inline]
+///
+/// Out of line on bare-metal targets, like [`polytope_support_near`]: one
+/// copy then serves both shapes of a pair and every call site (0.14 KB less
+/// flash for the polygon intersection test on the M4F, 0.28 KB with EPA).
+/// Hosts inline it for speed.
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
     const LINEAR_SCAN_MAX: usize = 24;
     if N > LINEAR_SCAN_MAX && vertices.len() > LINEAR_SCAN_MAX {
@@ -203,7 +209,8 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
 /// Support from the previous support vertex `start`, by walking at most 3
 /// steps; a direction that turned farther than that (or an out-of-range
 /// hint) falls back to the full search, so a jump never costs O(n).
-#[inline]
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     vertices: &[V2<R>],
     d: V2<R>,
