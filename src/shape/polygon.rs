@@ -32,30 +32,26 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         if points.len() > N {
             return Err(Error::OverCapacity);
         }
-        // Validated where it is built: no second vertex buffer on the stack.
-        let mut polygon =
-            Self { reference: V2::zero(), vertices: Vec::new(), center: V2::zero(), bounding_radius_squared: R::ZERO };
-        let vertices = &mut polygon.vertices;
+        // Built complete at the end, not zeroed first: zeroing it is a call
+        // to `memclr` (0.2 KB of flash) in a firmware that needs none.
+        let mut vertices: Vec<V2<R>, N> = Vec::new();
         for &p in points {
             // Capacity was checked above.
             let _ = vertices.push(check_point(V2::from_glam(p))?);
         }
-        if convex_winding(vertices)? < 0 {
+        if convex_winding(&vertices)? < 0 {
             vertices.reverse();
         }
-        let reference = choose_reference(vertices);
+        let reference = choose_reference(&vertices);
         for p in vertices.iter_mut() {
             *p = *p - reference;
         }
-        let center = area_centroid(vertices);
+        let center = area_centroid(&vertices);
         let mut r2 = R::ZERO;
         for &v in vertices.iter() {
             r2 = r2.max((v - center).length_squared());
         }
-        polygon.reference = reference;
-        polygon.center = center;
-        polygon.bounding_radius_squared = r2;
-        Ok(polygon)
+        Ok(Self { reference, vertices, center, bounding_radius_squared: r2 })
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
