@@ -293,7 +293,19 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             c.set_edge_distance(edge(p.w, w.w).0);
         }
     };
-    finish_curved(polytope, closest, &support, lower, (upper, best), tolerance, iterations, status)
+    // Without a polish: the best achievable answer seen, or (before any
+    // support was taken) the closest chord.
+    let fallback = if upper.is_finite() {
+        estimate(best, upper, (upper - lower).max(R::ZERO), iterations, status)
+    } else {
+        estimate(V2::new(R::ONE, R::ZERO), lower, R::ZERO, iterations, status)
+    };
+    // Polytopes have no curved region to polish: a firmware with polytopes
+    // alone then links none of it.
+    if difference.is_polytope() {
+        return fallback;
+    }
+    finish_curved(polytope, closest, &support, lower, upper, tolerance, iterations, fallback)
 }
 
 /// EPA stopped short (polytope full or out of iterations). On a curved
@@ -313,18 +325,11 @@ fn finish_curved<R: Real, S: Storage<R>>(
     closest: usize,
     support: &impl Fn(V2<R>) -> Corner<R>,
     lower: R,
-    (upper, best): (R, V2<R>),
+    upper: R,
     tolerance: R,
     mut iterations: u32,
-    status: Status,
+    fallback: PenetrationEstimate<R>,
 ) -> PenetrationEstimate<R> {
-    // Without a polish: the best achievable answer seen, or (before any
-    // support was taken) the closest chord.
-    let fallback = if upper.is_finite() {
-        estimate(best, upper, (upper - lower).max(R::ZERO), iterations, status)
-    } else {
-        estimate(V2::new(R::ONE, R::ZERO), lower, R::ZERO, iterations, status)
-    };
     let items = polytope.items();
     let n = items.len();
     if n < 3 || closest >= n {

@@ -43,6 +43,11 @@ pub trait MinkowskiDifference<R: Real> {
     /// The pair's size: the larger bounding radius. Relative tolerances are
     /// multiplied by it.
     fn scale(&self) -> R;
+    /// Whether both cores are polytopes ([`SupportMap::is_polytope`]): no
+    /// support point is ever on a curve. False, the default, is always safe.
+    fn is_polytope(&self) -> bool {
+        false
+    }
 }
 
 /// Two shapes placed relative to each other.
@@ -176,5 +181,8 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     }
     fn scale(&self) -> R {
         Pair::scale(self)
+    }
+    fn is_polytope(&self) -> bool {
+        self.a.is_polytope() && self.b.is_polytope()
     }
 }

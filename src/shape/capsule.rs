@@ -63,6 +63,9 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
     fn radius(&self) -> R {
         self.radius
     }
+    fn is_polytope(&self) -> bool {
+        true
+    }
     fn reference_point(&self) -> R::Vector {
         self.core.reference_point()
     }

@@ -46,6 +46,9 @@ impl<R: Real> SupportMap<R> for Circle<R> {
     fn radius(&self) -> R {
         self.radius
     }
+    fn is_polytope(&self) -> bool {
+        true
+    }
     fn reference_point(&self) -> R::Vector {
         self.center.to_glam()
     }

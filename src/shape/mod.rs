@@ -94,6 +94,15 @@ pub trait SupportMap<R: Real> {
         self.support_feature(direction)
     }
 
+    /// Whether the core is a polytope: every [`support_feature`](Self::support_feature)
+    /// is a vertex with an id, never [`NO_FEATURE`]. A penetration solver then
+    /// leaves out its work for curved boundaries, and a firmware whose shapes
+    /// are all polytopes links none of it (1.4 KB of flash with EPA on the
+    /// M4F). The default, false, is always safe: it only keeps that work.
+    fn is_polytope(&self) -> bool {
+        false
+    }
+
     /// An exact ray cast, for shapes that have a closed form: a ray in the
     /// local frame (origin relative to the reference point, unit direction),
     /// `max_length` infinite when unbounded. `None` (the default) makes the ray
@@ -128,6 +137,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
         (**self).support_feature_near(direction, previous)
+    }
+    fn is_polytope(&self) -> bool {
+        (**self).is_polytope()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         (**self).cast_local_ray(o, d, max)

@@ -48,6 +48,9 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
         let y = if py { self.half.y } else { -self.half.y };
         (R::vector(x, y), id)
     }
+    fn is_polytope(&self) -> bool {
+        true
+    }
     fn center(&self) -> R::Vector {
         R::vector(R::ZERO, R::ZERO)
     }

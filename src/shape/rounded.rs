@@ -49,6 +49,9 @@ impl<R: Real, S: SupportMap<R>> SupportMap<R> for Rounded<R, S> {
     fn radius(&self) -> R {
         self.inner.radius() + self.radius
     }
+    fn is_polytope(&self) -> bool {
+        self.inner.is_polytope()
+    }
     fn reference_point(&self) -> R::Vector {
         self.inner.reference_point()
     }

@@ -51,6 +51,9 @@ impl<R: Real> SupportMap<R> for Segment<R> {
         let (p, id) = self.support_local(V2::from_glam(direction));
         (p.to_glam(), id)
     }
+    fn is_polytope(&self) -> bool {
+        true
+    }
     fn center(&self) -> R::Vector {
         (self.delta * R::HALF).to_glam()
     }

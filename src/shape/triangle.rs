@@ -30,6 +30,9 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn support_feature_near(&self, d: R::Vector, previous: u32) -> (R::Vector, u32) {
         self.0.support_feature_near(d, previous)
     }
+    fn is_polytope(&self) -> bool {
+        true
+    }
     fn center(&self) -> R::Vector {
         self.0.center()
     }
