@@ -108,97 +108,57 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     }
 
     /// Reduces the simplex to the smallest face holding the closest point to
-    /// the origin, and returns that point. Works in place, by index: no
-    /// vertex is copied more than once (stack depth on microcontrollers).
+    /// the origin, and returns that point. The geometry is the same for
+    /// every payload ([`closest_face`]); only keeping the face is not.
     #[inline]
     pub fn solve(&mut self) -> Closest<R> {
-        match self.len {
-            2 => Closest::Point(self.reduce_to_segment(0, 1)),
-            3 => self.solve_triangle(),
-            _ => {
-                self.verts[0].payload.set_weight(R::ONE);
-                Closest::Point(self.verts[0].w)
-            }
-        }
+        let face = closest_face(&self.points(), self.len);
+        self.keep(face)
     }
 
-    fn solve_triangle(&mut self) -> Closest<R> {
-        let [wa, wb, wc] = [self.verts[0].w, self.verts[1].w, self.verts[2].w];
-        let area = (wb - wa).cross(wc - wa);
-        // The origin is on the inner side of edge i->j when cross(wi, wj)
-        // has the sign of the area (zero counts as inside: touching).
-        let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
-        let outside = |side: R| {
-            if area > R::ZERO {
-                side < R::ZERO
-            } else if area < R::ZERO {
-                side > R::ZERO
-            } else {
-                true
-            }
-        };
-        if area != R::ZERO && !sides.iter().any(|&s| outside(s)) {
-            return Closest::Enclosed;
-        }
-        // The closest point lies on an edge the origin is outside of; a
-        // degenerate (flat) triangle tries all three.
-        const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
-        let ws = [wa, wb, wc];
-        let mut best: Option<Candidate<R>> = None;
-        for (&edge, &side) in EDGES.iter().zip(sides.iter()) {
-            if outside(side) {
-                let (foot, v) = segment_foot(ws[edge.0], ws[edge.1]);
-                let vv = v.length_squared();
-                if best.as_ref().is_none_or(|b| vv < b.vv) {
-                    best = Some(Candidate { edge, foot, v, vv });
-                }
-            }
-        }
-        match best {
-            Some(Candidate { edge: (i, j), foot, v, .. }) => {
-                self.reduce(i, j, foot);
+    #[inline(always)]
+    fn points(&self) -> [V2<R>; 3] {
+        [self.verts[0].w, self.verts[1].w, self.verts[2].w]
+    }
+
+    #[inline(always)]
+    fn keep(&mut self, face: Face<R>) -> Closest<R> {
+        match face {
+            Face::Enclosed => Closest::Enclosed,
+            Face::Vertex(i, v) => {
+                self.keep_one(i);
                 Closest::Point(v)
             }
-            None => Closest::Enclosed,
-        }
-    }
-
-    /// Reduces to the vertex or edge of `verts[i]`-`verts[j]` holding the
-    /// closest point to the origin, and returns that point.
-    fn reduce_to_segment(&mut self, i: usize, j: usize) -> V2<R> {
-        let (foot, v) = segment_foot(self.verts[i.min(2)].w, self.verts[j.min(2)].w);
-        self.reduce(i, j, foot);
-        v
-    }
-
-    /// Keeps what `foot` says of the segment `verts[i]`-`verts[j]`.
-    fn reduce(&mut self, i: usize, j: usize, foot: Foot<R>) {
-        match foot {
-            Foot::AtFirst => self.keep_one(i),
-            Foot::AtSecond => self.keep_one(j),
-            Foot::Between { first, second, sum } => {
-                // Constant indices only: a copy between slots the compiler
-                // cannot tell apart becomes a call to `memmove`, 1.5 KB of
-                // flash in a firmware that needs nothing else of it.
-                match (i, j) {
-                    (1, 2) => {
-                        self.verts[0] = self.verts[1];
-                        self.verts[1] = self.verts[2];
-                    }
-                    (2, 0) => {
-                        let first_vertex = self.verts[0];
-                        self.verts[0] = self.verts[2];
-                        self.verts[1] = first_vertex;
-                    }
-                    _ => {}
-                }
-                // Divided, not multiplied by 1/sum: 1/sum overflows for a
-                // subnormal sum (coordinates near 1e-154 in f64).
-                self.verts[0].payload.set_weight(first / sum);
-                self.verts[1].payload.set_weight(second / sum);
-                self.len = 2;
+            Face::Edge { edge, weights, v } => {
+                self.keep_edge(edge, weights);
+                Closest::Point(v)
             }
         }
+    }
+
+    /// Keeps edge `verts[i]`-`verts[j]` in slots 0 and 1, with the closest
+    /// point's weights `first / sum` and `second / sum`.
+    fn keep_edge(&mut self, (i, j): (usize, usize), Weights { first, second, sum }: Weights<R>) {
+        // Constant indices only: a copy between slots the compiler cannot
+        // tell apart becomes a call to `memmove`, 1.5 KB of flash in a
+        // firmware that needs nothing else of it.
+        match (i, j) {
+            (1, 2) => {
+                self.verts[0] = self.verts[1];
+                self.verts[1] = self.verts[2];
+            }
+            (2, 0) => {
+                let first_vertex = self.verts[0];
+                self.verts[0] = self.verts[2];
+                self.verts[1] = first_vertex;
+            }
+            _ => {}
+        }
+        // Divided, not multiplied by 1/sum: 1/sum overflows for a subnormal
+        // sum (coordinates near 1e-154 in f64).
+        self.verts[0].payload.set_weight(first / sum);
+        self.verts[1].payload.set_weight(second / sum);
+        self.len = 2;
     }
 
     fn keep_one(&mut self, i: usize) {
@@ -263,12 +223,102 @@ impl<R: Real, P> Simplex<R, P> {
     }
 }
 
-/// One of a triangle's edges as the possible home of the closest point.
-struct Candidate<R> {
-    edge: (usize, usize),
-    foot: Foot<R>,
-    v: V2<R>,
-    vv: R,
+/// The face of a simplex that holds its closest point to the origin.
+enum Face<R> {
+    /// The origin lies inside the triangle or on its boundary.
+    Enclosed,
+    /// Vertex `i` alone, which is the closest point.
+    Vertex(usize, V2<R>),
+    /// Strictly inside the edge between vertices `edge.0` and `edge.1`.
+    Edge { edge: (usize, usize), weights: Weights<R>, v: V2<R> },
+}
+
+/// Barycentric weights of an edge's ends in its closest point, as
+/// `first / sum` and `second / sum`.
+#[derive(Clone, Copy, Debug)]
+struct Weights<R> {
+    first: R,
+    second: R,
+    sum: R,
+}
+
+/// The face of the first `len` of `w` (1 to 3 points) holding the closest
+/// point to the origin, and that point.
+///
+/// One copy for every payload where there are several (the intersection
+/// test's simplex carries nothing, the distance query's witness points), and
+/// inlined by the compiler where there is one caller (a firmware with the
+/// intersection test alone). On the M4F, against one inlined solve per
+/// payload: 0.39 KB less flash with distance, 0.1 KB with ray casts too.
+/// Hosts inline it everywhere for speed.
+#[cfg_attr(target_os = "none", inline)]
+#[cfg_attr(not(target_os = "none"), inline(always))]
+fn closest_face<R: Real>(w: &[V2<R>; 3], len: usize) -> Face<R> {
+    let (edge, foot) = match len {
+        2 => ((0, 1), segment_foot(w[0], w[1])),
+        3 => match closest_triangle_edge(w) {
+            Some(closest) => closest,
+            None => return Face::Enclosed,
+        },
+        _ => return Face::Vertex(0, w[0]),
+    };
+    face_of(edge, foot)
+}
+
+/// An edge (its vertex indices) and the foot of the origin on it.
+type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
+
+/// The edge of triangle `w` holding its closest point to the origin, and
+/// the foot on it; `None` when the triangle encloses the origin (the
+/// boundary counts: touching).
+///
+/// Out of line on bare-metal targets: its frame (three feet) is then only
+/// on the stack while a triangle is solved, not in every segment solve (in
+/// f64 on the M4F the intersection test peaked 0.24 KB deeper, past 1 KB).
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline(always))]
+fn closest_triangle_edge<R: Real>(w: &[V2<R>; 3]) -> Option<EdgeFoot<R>> {
+    let [wa, wb, wc] = *w;
+    let area = (wb - wa).cross(wc - wa);
+    // The origin is on the inner side of edge i->j when cross(wi, wj)
+    // has the sign of the area (zero counts as inside: touching).
+    let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
+    let outside = |side: R| {
+        if area > R::ZERO {
+            side < R::ZERO
+        } else if area < R::ZERO {
+            side > R::ZERO
+        } else {
+            true
+        }
+    };
+    if area != R::ZERO && !sides.iter().any(|&s| outside(s)) {
+        return None;
+    }
+    // The closest point lies on an edge the origin is outside of; a
+    // degenerate (flat) triangle tries all three.
+    const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
+    let mut best: Option<(EdgeFoot<R>, R)> = None;
+    for (&edge, &side) in EDGES.iter().zip(sides.iter()) {
+        if outside(side) {
+            let foot = segment_foot(w[edge.0], w[edge.1]);
+            let vv = foot.1.length_squared();
+            if best.as_ref().is_none_or(|b| vv < b.1) {
+                best = Some(((edge, foot), vv));
+            }
+        }
+    }
+    best.map(|b| b.0)
+}
+
+/// The face that a foot on the edge between vertices `i` and `j` lies on.
+#[inline(always)]
+fn face_of<R: Real>((i, j): (usize, usize), foot: (Foot<R>, V2<R>)) -> Face<R> {
+    match foot {
+        (Foot::AtFirst, v) => Face::Vertex(i, v),
+        (Foot::AtSecond, v) => Face::Vertex(j, v),
+        (Foot::Between(weights), v) => Face::Edge { edge: (i, j), weights, v },
+    }
 }
 
 /// Where the closest point of a segment to the origin lies.
@@ -276,13 +326,8 @@ struct Candidate<R> {
 enum Foot<R> {
     AtFirst,
     AtSecond,
-    /// Strictly inside: the barycentric weights are `first / sum` and
-    /// `second / sum`.
-    Between {
-        first: R,
-        second: R,
-        sum: R,
-    },
+    /// Strictly inside, with these weights.
+    Between(Weights<R>),
 }
 
 /// The closest point of segment `p`-`q` to the origin and where it lies.
@@ -291,10 +336,9 @@ enum Foot<R> {
 /// underflows, or weights that would be 0 * inf (coordinates below 1e-19 in
 /// f32), keep the nearer end: as good as rounding allows.
 ///
-/// Out of line on bare-metal targets: the triangle solve's unrolled loop
-/// would otherwise hold three copies and the segment solve a fourth (0.47 KB
-/// of flash in a distance firmware on the M4F, 0.68 KB with EPA). Hosts
-/// inline it for speed.
+/// Out of line on bare-metal targets: the triangle's unrolled loop would
+/// otherwise hold three copies and the segment a fourth (96 B more flash in
+/// each firmware on the M4F). Hosts inline it for speed.
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
 fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
@@ -315,5 +359,5 @@ fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     if !(sum > R::ZERO && sum.is_finite()) {
         return if p_nearer { (Foot::AtFirst, p) } else { (Foot::AtSecond, q) };
     }
-    (Foot::Between { first: toward_p, second: toward_q, sum }, n * (n.dot(p) / nn))
+    (Foot::Between(Weights { first: toward_p, second: toward_q, sum }), n * (n.dot(p) / nn))
 }
