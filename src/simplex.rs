@@ -138,6 +138,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
 
     /// Keeps edge `verts[i]`-`verts[j]` in slots 0 and 1, with the closest
     /// point's weights `first / sum` and `second / sum`.
+    #[inline(always)]
     fn keep_edge(&mut self, (i, j): (usize, usize), Weights { first, second, sum }: Weights<R>) {
         // Constant indices only: a copy between slots the compiler cannot
         // tell apart becomes a call to `memmove`, 1.5 KB of flash in a
@@ -161,6 +162,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         self.len = 2;
     }
 
+    #[inline(always)]
     fn keep_one(&mut self, i: usize) {
         match i {
             1 => self.verts[0] = self.verts[1],
