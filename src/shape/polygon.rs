@@ -215,9 +215,10 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     fn reference_point(&self) -> R::Vector {
         self.reference.to_glam()
     }
-    /// Ids of more than 65535 vertices do not fit the pair's 16 bits each.
+    /// Vertex indices below 65535 fit the pair's 16 bits each (65535 there
+    /// marks a curve point).
     fn is_polytope(&self) -> bool {
-        N < 0xFFFF
+        N <= 0xFFFF
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_polygon(&self.vertices, V2::from_glam(o), V2::from_glam(d), max))
