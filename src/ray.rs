@@ -57,7 +57,7 @@ fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
 pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let (mut lower, mut upper) = (R::ZERO, max);
     let mut entered: Option<V2<R>> = None;
-    for (&a, &b) in vertices.iter().zip(vertices.iter().cycle().skip(1)) {
+    for (&a, &b) in vertices.iter().zip(vertices.iter().skip(1).chain(vertices.first())) {
         let normal = (b - a).perp_cw();
         // Positive when the origin is on the inner side of this edge.
         let numerator = normal.dot(a - o);

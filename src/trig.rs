@@ -21,6 +21,8 @@ const FRAC_2_PI: f32 = core::f32::consts::FRAC_2_PI;
 /// 2^23: above it every f32 is an integer; adding and subtracting it (with
 /// the sign of the value) rounds to the nearest integer below it.
 const TWO_POW_23: f32 = 8_388_608.0;
+/// 2^26: from here on every f32 is a multiple of 4.
+const QUADRANT_EXACT: f32 = 67_108_864.0;
 /// How far from 0 the reduced angle can be: pi/4, plus the rounding of the
 /// quadrant count (`x * 2/pi` rounds to a spacing of up to 1 below 2^24).
 const REDUCED_BOUND: f32 = 1.6;
@@ -45,8 +47,11 @@ pub(crate) fn sin_cos_f32(x: f32) -> (f32, f32) {
     // keep it there (and the result finite).
     let r = r.clamp(-REDUCED_BOUND, REDUCED_BOUND);
     let (s, c) = (sin_kernel(r), cos_kernel(r));
-    // k's two low bits: the quadrant. `as i64` saturates, and huge k are even.
-    match (k as i64) & 3 {
+    // k's two low bits: the quadrant. From 2^26 on, f32 integers are
+    // multiples of 4. Below, `as i32` is exact (and one instruction with an
+    // FPU, where `as i64` is a library call).
+    let quadrant = if k.abs() < QUADRANT_EXACT { (k as i32) & 3 } else { 0 };
+    match quadrant {
         0 => (s, c),
         1 => (c, -s),
         2 => (-s, -c),

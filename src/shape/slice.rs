@@ -21,7 +21,7 @@ impl<R: Real> Slice<R> {
         if !theta.is_finite() {
             return Err(Error::NonFinite);
         }
-        if theta <= R::ZERO || theta.to_f64() > core::f64::consts::PI {
+        if theta <= R::ZERO || beyond_pi(theta) {
             return Err(Error::AngleOutOfRange);
         }
         let half = theta * R::HALF;
@@ -74,5 +74,18 @@ impl<R: Real> SupportMap<R> for Slice<R> {
     }
     fn bounding_radius(&self) -> R {
         self.centroid.x.max((self.ends[0] - self.centroid).length())
+    }
+}
+
+/// Whether `theta` exceeds pi exactly, in `R` alone: converting `theta` to
+/// f64 would link soft double arithmetic into f32 firmware. pi rounds up to
+/// the nearest f32 and down to the nearest f64; the test against the
+/// rounded value follows the direction (a constant, folded at compile time).
+fn beyond_pi<R: Real>(theta: R) -> bool {
+    let pi = R::from_f64(core::f64::consts::PI);
+    if pi.to_f64() > core::f64::consts::PI {
+        theta >= pi
+    } else {
+        theta > pi
     }
 }
