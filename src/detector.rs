@@ -156,6 +156,7 @@ enum Proximity<R: Real> {
 /// penetration solver's polytope is pushed on it (the query's peak stack on
 /// a microcontroller).
 #[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline(always))]
 fn core_proximity<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> Proximity<R>
 where
     R: Real,
