@@ -140,8 +140,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// [`support`](Self::support) for the queries that ask for supports in
     /// several places (distance, EPA): one out-of-line copy on bare-metal
-    /// targets, where each inlined copy costs flash (1.0 KB in a firmware with
-    /// EPA on two polygons on the M4F, 2.0 KB with every shape and query). The
+    /// targets, where each inlined copy costs flash (0.8 KB in a firmware with
+    /// EPA on two polygons on the M4F, 1.7 KB with every shape and query). The
     /// intersection test keeps the inlined one:
     /// there the compiler sees that a polygon's ids are never [`NO_ID`] and
     /// drops the code for curved shapes.

@@ -97,7 +97,7 @@ pub trait SupportMap<R: Real> {
     /// Whether the core is a polytope: every [`support_feature`](Self::support_feature)
     /// is a vertex with an id, never [`NO_FEATURE`]. A penetration solver then
     /// leaves out its work for curved boundaries, and a firmware whose shapes
-    /// are all polytopes links none of it (1.3 KB of flash with EPA on the
+    /// are all polytopes links none of it (1.1 KB of flash with EPA on the
     /// M4F). The default, false, is always safe: it only keeps that work.
     fn is_polytope(&self) -> bool {
         false
@@ -232,8 +232,8 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     // Up to this capacity the polygon is scanned, and firmware with small
     // polygons links no walk: 0.2 to 0.3 KB less flash on the M4F, where
     // instructions move by at most 6% either way for 4 to 6 vertices
-    // (walk -> scan: overlapping test 1372 -> 1306, EPA 4280 -> 4094, apart
-    // 1100 -> 1144, distance 2540 -> 2678). On x86-64 the walk is faster from about 8
+    // (walk -> scan at 00160b6: overlapping test 1372 -> 1306, EPA 4280 ->
+    // 4094, apart 1100 -> 1144, distance 2540 -> 2678). On x86-64 the walk is faster from about 8
     // vertices, so larger capacities walk.
     const SCAN_ONLY_MAX: usize = 8;
     if N > SCAN_ONLY_MAX && (start as usize) < vertices.len() {
