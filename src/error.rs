@@ -34,9 +34,11 @@ pub enum Error {
     InvalidEpsilon,
 }
 
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let text = match self {
+impl Error {
+    /// What went wrong, in words: `const`, so a constant shape's
+    /// `panic!("{}", e.as_str())` can say it in the compile error.
+    pub const fn as_str(self) -> &'static str {
+        match self {
             Error::NonFinite => "a value is NaN or infinite",
             Error::OutOfRange => "a coordinate is too large (over 1e15 in f32, 1e150 in f64)",
             Error::NonPositive => "a radius, extent or length must be positive",
@@ -49,8 +51,13 @@ impl fmt::Display for Error {
             Error::AngleOutOfRange => "an angle is out of range",
             Error::TooFewIterations => "an iteration limit must be at least 5",
             Error::InvalidEpsilon => "an epsilon is out of range",
-        };
-        f.write_str(text)
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
     }
 }
 

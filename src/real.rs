@@ -10,7 +10,8 @@ use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 mod sealed {
-    pub trait Sealed {}
+    /// Also how generic code reaches per-type `const fn`s.
+    pub trait Sealed: crate::shape::FramePolygon {}
     impl Sealed for f32 {}
     impl Sealed for f64 {}
 }
@@ -162,7 +163,7 @@ fn sin_cos_f64(x: f64) -> (f64, f64) {
 
 /// The internal 2D vector, generic over the scalar.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct V2<R> {
+pub struct V2<R> {
     pub x: R,
     pub y: R,
 }
@@ -283,63 +284,6 @@ impl<R: Real> Mul<R> for V2<R> {
     fn mul(self, s: R) -> Self {
         Self::new(self.x * s, self.y * s)
     }
-}
-
-/// `cross(b - a, c - a)` with its sign right far beyond what the plain formula
-/// gives: positive when `a, b, c` turn counter-clockwise. The differences and
-/// products are expanded error-free (TwoDiff, Dekker's TwoProduct), so only the final sums round,
-/// and those are tiny next to any value they could flip. Used where a sign
-/// decides a verdict (convexity of user polygons), never in hot loops.
-pub(crate) fn orientation<R: Real>(a: V2<R>, b: V2<R>, c: V2<R>) -> R {
-    let (abx, abx_e) = two_diff(b.x, a.x);
-    let (aby, aby_e) = two_diff(b.y, a.y);
-    let (acx, acx_e) = two_diff(c.x, a.x);
-    let (acy, acy_e) = two_diff(c.y, a.y);
-    let (p, p_e) = two_product(abx, acy);
-    let (q, q_e) = two_product(aby, acx);
-    // Main term and its error, then the cross terms from the difference errors.
-    let main = p - q;
-    let tail =
-        (p_e - q_e) + (abx * acy_e + abx_e * acy) - (aby * acx_e + aby_e * acx) + (abx_e * acy_e - aby_e * acx_e);
-    // When p and q nearly cancel, p - q is exact (Sterbenz) and the sign
-    // comes from the tail of rounding errors, which is itself computed
-    // almost exactly.
-    main + tail
-}
-
-/// Dekker's TwoProduct: `hi + lo == a * b` exactly (no overflow assumed:
-/// coordinates are bounded by `MAX_COORDINATE`).
-#[inline]
-fn two_product<R: Real>(a: R, b: R) -> (R, R) {
-    let hi = a * b;
-    let (ah, al) = split(a);
-    let (bh, bl) = split(b);
-    let lo = ((ah * bh - hi) + ah * bl + al * bh) + al * bl;
-    (hi, lo)
-}
-
-/// Veltkamp's split: `a == hi + lo` with both halves of at most half the
-/// significand's bits.
-#[inline]
-fn split<R: Real>(a: R) -> (R, R) {
-    let c = R::SPLITTER * a;
-    let hi = c - (c - a);
-    (hi, a - hi)
-}
-
-/// Whether `a - b` is representable exactly (so shifting by `b` loses nothing).
-pub(crate) fn is_exact_difference<R: Real>(a: R, b: R) -> bool {
-    two_diff(a, b).1 == R::ZERO
-}
-
-/// Knuth's TwoSum applied to `a - b`: `hi + lo == a - b` exactly.
-#[inline]
-fn two_diff<R: Real>(a: R, b: R) -> (R, R) {
-    let hi = a - b;
-    let bv = a - hi;
-    let av = hi + bv;
-    let lo = (a - av) + (bv - b);
-    (hi, lo)
 }
 
 /// `items[i % len]`, and `T::default()` for an empty slice: cyclic access to

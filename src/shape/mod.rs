@@ -11,6 +11,7 @@ mod circle;
 mod ellipse;
 mod half_ellipse;
 mod polygon;
+mod polygon_frame;
 mod rectangle;
 mod rounded;
 mod segment;
@@ -22,6 +23,7 @@ pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use half_ellipse::HalfEllipse;
 pub use polygon::Polygon;
+pub(crate) use polygon_frame::FramePolygon;
 pub use rectangle::Rectangle;
 pub use rounded::Rounded;
 pub use segment::Segment;
@@ -221,14 +223,12 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
 /// Support from the previous support vertex `start`, by walking at most 3
 /// steps; a direction that turned farther than that (or an out-of-range
 /// hint) falls back to the full search, so a jump never costs O(n).
-#[cfg_attr(target_os = "none", inline(never))]
-#[cfg_attr(not(target_os = "none"), inline)]
+#[inline(always)]
 pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     vertices: &[V2<R>],
     d: V2<R>,
     start: u32,
 ) -> (usize, V2<R>) {
-    const MAX_WALK: usize = 3;
     // Up to this capacity the polygon is scanned, and firmware with small
     // polygons links no walk: 0.2 to 0.3 KB less flash on the M4F, where
     // instructions move by at most 6% either way for 4 to 6 vertices
@@ -236,7 +236,20 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     // 4094, apart 1100 -> 1144, distance 2540 -> 2678). On x86-64 the walk is faster from about 8
     // vertices, so larger capacities walk.
     const SCAN_ONLY_MAX: usize = 8;
-    if N > SCAN_ONLY_MAX && (start as usize) < vertices.len() {
+    if N > SCAN_ONLY_MAX {
+        walk_from::<R, N>(vertices, d, start)
+    } else {
+        polytope_support::<R, N>(vertices, d)
+    }
+}
+
+/// The walk of [`polytope_support_near`], out of line on bare-metal targets
+/// like [`polytope_support`].
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline)]
+fn walk_from<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>, start: u32) -> (usize, V2<R>) {
+    const MAX_WALK: usize = 3;
+    if (start as usize) < vertices.len() {
         if let (k, true) = hill_climb(vertices, d, start as usize, MAX_WALK) {
             return (k, at(vertices, k));
         }

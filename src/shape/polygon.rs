@@ -1,11 +1,16 @@
+use super::polygon_frame::Frame;
 use super::{polytope_support, polytope_support_near, SupportMap};
 use crate::ray::{cast_ray_polygon, LocalRayCast};
-use crate::real::{cyclic, orientation, Real, V2};
-use crate::transform::check_point;
+use crate::real::{Real, V2};
 use crate::Error;
-use heapless::Vec;
+use glam::{DVec2, Vec2};
 
 /// A convex polygon of at most `N` vertices, stored inline (no allocator).
+///
+/// The vertices are a plain array and a length, not a `heapless::Vec`: a
+/// type without a destructor is what lets a `const` declare one
+/// ([`from_array`](Polygon::from_array)). Unused slots stay zero, so the
+/// derived comparison compares the polygons.
 ///
 /// Vertices are kept counter-clockwise and relative to the first one (the
 /// reference point), so a polygon given in world coordinates far from the
@@ -13,7 +18,8 @@ use heapless::Vec;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polygon<R: Real, const N: usize> {
     reference: V2<R>,
-    vertices: Vec<V2<R>, N>,
+    vertices: [V2<R>; N],
+    len: usize,
     center: V2<R>,
     /// Squared, so a firmware that only tests polygons for overlap links no
     /// square root.
@@ -32,26 +38,29 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         if points.len() > N {
             return Err(Error::OverCapacity);
         }
-        // Built complete at the end, not zeroed first: zeroing it is a call
-        // to `memclr` (0.2 KB of flash) in a firmware that needs none.
-        let mut vertices: Vec<V2<R>, N> = Vec::new();
-        for &p in points {
-            // Capacity was checked above.
-            let _ = vertices.push(check_point(V2::from_glam(p))?);
+        // Each slot written once, not zeroed first: zeroing is a call to
+        // `memclr` (0.2 KB of flash) in a firmware that needs none.
+        let mut vertices: [V2<R>; N] =
+            core::array::from_fn(|i| points.get(i).map_or(V2::zero(), |&p| V2::from_glam(p)));
+        let frame = R::frame_polygon(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
+        Ok(Self::framed(vertices, points.len(), frame))
+    }
+
+    #[inline(always)]
+    const fn framed(vertices: [V2<R>; N], len: usize, frame: Frame<R>) -> Self {
+        Self {
+            reference: frame.reference,
+            vertices,
+            len,
+            center: frame.center,
+            bounding_radius_squared: frame.bounding_radius_squared,
         }
-        if convex_winding(&vertices)? < 0 {
-            vertices.reverse();
-        }
-        let reference = choose_reference(&vertices);
-        for p in vertices.iter_mut() {
-            *p = *p - reference;
-        }
-        let center = area_centroid(&vertices);
-        let mut r2 = R::ZERO;
-        for &v in vertices.iter() {
-            r2 = r2.max((v - center).length_squared());
-        }
-        Ok(Self { reference, vertices, center, bounding_radius_squared: r2 })
+    }
+
+    /// The vertices, counter-clockwise, relative to the reference point.
+    #[inline(always)]
+    fn vertices(&self) -> &[V2<R>] {
+        self.vertices.get(..self.len).unwrap_or(&[])
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
@@ -64,17 +73,19 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         if count > N {
             return Err(Error::OverCapacity);
         }
-        let mut points: Vec<R::Vector, N> = Vec::new();
-        for i in 0..count {
+        let points: [R::Vector; N] = core::array::from_fn(|i| {
+            if i >= count {
+                return R::Vector::default();
+            }
             let angle = R::from_f64(core::f64::consts::TAU * i as f64 / count as f64);
             let (sin, cos) = angle.sin_cos();
-            let _ = points.push(R::vector(radius * cos, radius * sin));
-        }
-        Self::new(&points)
+            R::vector(radius * cos, radius * sin)
+        });
+        Self::new(points.get(..count).unwrap_or(&[]))
     }
 
     pub fn len(&self) -> usize {
-        self.vertices.len()
+        self.len
     }
     /// Always false: a polygon has at least 3 vertices.
     pub fn is_empty(&self) -> bool {
@@ -82,7 +93,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     }
     /// Vertex `i` (counter-clockwise order) in local coordinates.
     pub fn vertex(&self, i: usize) -> Option<R::Vector> {
-        self.vertices.get(i).map(|&v| (v + self.reference).to_glam())
+        self.vertices().get(i).map(|&v| (v + self.reference).to_glam())
     }
     /// The area centroid in local coordinates.
     pub fn centroid(&self) -> R::Vector {
@@ -90,94 +101,66 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     }
 }
 
-/// The point vertices are stored relative to. Far from the origin (or
-/// wherever the shift is exact), the first vertex: differences of nearby
-/// floats are exact, and the shape keeps its own precision, not its
-/// position's. Near the origin, the origin itself: the coordinates as given
-/// are exact already, and a shift would round them.
-pub(crate) fn choose_reference<R: Real>(points: &[V2<R>]) -> V2<R> {
-    let first = cyclic(points, 0);
-    let exact = points
-        .iter()
-        .all(|&p| crate::real::is_exact_difference(p.x, first.x) && crate::real::is_exact_difference(p.y, first.y));
-    let mut extent = R::ZERO;
-    for &p in points {
-        extent = extent.max((p - first).max_abs());
-    }
-    if exact || first.max_abs() > extent * R::from_u32(4) {
-        first
-    } else {
-        V2::zero()
-    }
-}
-
-/// +1 for a counter-clockwise convex polygon, -1 for a clockwise one, in
-/// one pass over the edges. No edge may be empty, every turn must go the same
-/// way (collinear turns allowed) and the edge directions must wind once: a
-/// convex polygon's edge x- and y-components change sign at most twice
-/// around the loop, a pentagram's more often.
-fn convex_winding<R: Real>(p: &[V2<R>]) -> Result<i32, Error> {
-    let n = p.len();
-    let (mut left, mut right) = (false, false);
-    let mut changes = 0u32;
-    let mut last = [R::ZERO; 2];
-    // Edge n is edge 0 again: the sign changes close the loop.
-    for i in 0..=n {
-        let e = cyclic(p, i + 1) - cyclic(p, i);
-        if e.x == R::ZERO && e.y == R::ZERO {
-            return Err(Error::DuplicateVertex);
-        }
-        for (component, last) in [e.x, e.y].into_iter().zip(last.iter_mut()) {
-            if component != R::ZERO {
-                if *last != R::ZERO && (component > R::ZERO) != (*last > R::ZERO) {
-                    changes += 1;
+/// The `const` constructor, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! from_array {
+    ($R:ty, $vector:ty, $frame:path) => {
+        impl<const N: usize> Polygon<$R, N> {
+            /// A convex polygon of exactly `N` vertices, in either winding,
+            /// checked as [`Polygon::new`] checks them and stored bit for bit
+            /// as it stores them; but `const`, so a polygon declared as a
+            /// constant is checked when the program is compiled. An invalid
+            /// one fails the build, and the program carries neither the
+            /// checks (1.7 KB on a Cortex-M4F) nor a copy of the vertices in
+            /// RAM:
+            ///
+            /// ```
+            /// # use gjk2d::Polygon;
+            #[doc = concat!("# use glam::", stringify!($vector), ";")]
+            #[doc = concat!("const WEDGE: Polygon<", stringify!($R), ", 3> = match Polygon::<", stringify!($R), ", 3>::from_array([")]
+            #[doc = concat!("    ", stringify!($vector), "::new(0.0, 0.0),")]
+            #[doc = concat!("    ", stringify!($vector), "::new(2.0, 0.0),")]
+            #[doc = concat!("    ", stringify!($vector), "::new(0.0, 1.0),")]
+            /// ]) {
+            ///     Ok(wedge) => wedge,
+            ///     Err(e) => panic!("{}", e.as_str()), // a compile error, never a run-time panic
+            /// };
+            /// assert_eq!(WEDGE.len(), 3);
+            /// ```
+            ///
+            /// Three points on a line are no polygon, and the build says so
+            /// ("the polygon has no area"):
+            ///
+            /// ```compile_fail
+            /// # use gjk2d::Polygon;
+            #[doc = concat!("# use glam::", stringify!($vector), ";")]
+            #[doc = concat!("const FLAT: Polygon<", stringify!($R), ", 3> = match Polygon::<", stringify!($R), ", 3>::from_array([")]
+            #[doc = concat!("    ", stringify!($vector), "::new(0.0, 0.0),")]
+            #[doc = concat!("    ", stringify!($vector), "::new(1.0, 0.0),")]
+            #[doc = concat!("    ", stringify!($vector), "::new(2.0, 0.0),")]
+            /// ]) {
+            ///     Ok(flat) => flat,
+            ///     Err(e) => panic!("{}", e.as_str()),
+            /// };
+            /// ```
+            pub const fn from_array(points: [$vector; N]) -> Result<Self, Error> {
+                let mut vertices = [V2 { x: 0.0, y: 0.0 }; N];
+                let mut i = 0;
+                while i < N {
+                    vertices[i] = V2 { x: points[i].x, y: points[i].y };
+                    i += 1;
                 }
-                *last = component;
+                match $frame(&mut vertices) {
+                    Ok(frame) => Ok(Self::framed(vertices, N, frame)),
+                    Err(e) => Err(e),
+                }
             }
         }
-        if i < n {
-            let turn = orientation(cyclic(p, i), cyclic(p, i + 1), cyclic(p, i + 2));
-            left |= turn > R::ZERO;
-            right |= turn < R::ZERO;
-        }
-    }
-    if left && right {
-        return Err(Error::NotConvex);
-    }
-    if !left && !right {
-        return Err(Error::Degenerate);
-    }
-    // Each component of a closed loop's edges changes sign at least twice,
-    // and every one of them 2k times when the edges wind k times: more than
-    // four changes in all is a second winding.
-    if changes > 4 {
-        return Err(Error::NotConvex);
-    }
-    Ok(if left { 1 } else { -1 })
+    };
 }
 
-/// Area centroid of a counter-clockwise polygon: a fan from vertex 0, on
-/// coordinates relative to it, so the triangles' areas and centers lose
-/// nothing to a far-away origin. Two passes (total area, then each triangle's
-/// share of it) so no intermediate grows like size cubed: at f32's coordinate
-/// limit that would overflow.
-pub(crate) fn area_centroid<R: Real>(v: &[V2<R>]) -> V2<R> {
-    let origin = cyclic(v, 0);
-    let fan = || v.iter().zip(v.iter().skip(1)).skip(1).map(move |(&p, &q)| (p - origin, q - origin));
-    let area2 = fan().fold(R::ZERO, |sum, (p, q)| sum + p.cross(q));
-    if area2 > R::ZERO && area2.is_finite() {
-        let third = R::ONE / R::from_u32(3);
-        let acc = fan().fold(V2::zero(), |acc, (p, q)| acc + (p + q) * (p.cross(q) / area2));
-        origin + acc * third
-    } else {
-        // Unreachable for validated polygons; the vertex mean is a safe center.
-        let mut m = V2::zero();
-        for &p in v {
-            m = m + (p - origin) * (R::ONE / R::from_u32(v.len() as u32));
-        }
-        origin + m
-    }
-}
+from_array!(f32, Vec2, super::polygon_frame::single::frame);
+from_array!(f64, DVec2, super::polygon_frame::double::frame);
 
 /// A support index as a feature id, clamped below the capacity (where it is
 /// already): the clamp tells the compiler that ids of a polygon of fewer than
@@ -195,12 +178,12 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     #[inline]
     fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
-        let (i, v) = polytope_support::<R, N>(&self.vertices, V2::from_glam(direction));
+        let (i, v) = polytope_support::<R, N>(self.vertices(), V2::from_glam(direction));
         (v.to_glam(), vertex_id::<N>(i))
     }
     #[inline]
     fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
-        let (i, v) = polytope_support_near::<R, N>(&self.vertices, V2::from_glam(direction), previous);
+        let (i, v) = polytope_support_near::<R, N>(self.vertices(), V2::from_glam(direction), previous);
         (v.to_glam(), vertex_id::<N>(i))
     }
     fn center(&self) -> R::Vector {
@@ -221,6 +204,6 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
         N <= 0xFFFF
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_polygon(&self.vertices, V2::from_glam(o), V2::from_glam(d), max))
+        Some(cast_ray_polygon(self.vertices(), V2::from_glam(o), V2::from_glam(d), max))
     }
 }
