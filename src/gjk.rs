@@ -184,17 +184,44 @@ where
     };
     // The gap tolerance, for curved cores only (computed on first use).
     let mut tolerance = None;
-    let mut simplex: Simplex<R, ()> =
-        Simplex::new(Vertex::from_minkowski(&pair.support(first_direction(pair.centers))));
+    // One support call, at the top of the loop, for the first point too:
+    // a second inlined copy of it for the start would cost 0.2 KB of flash
+    // in a firmware with the intersection test alone.
+    let mut simplex: Simplex<R, ()> = Simplex::empty();
+    let mut direction = first_direction(pair.centers);
+    let (mut v, mut vv) = (V2::zero(), R::ZERO);
+    let mut before = simplex.ids();
     let mut previous = R::INFINITY;
-    let mut iterations = 1;
+    let mut iterations = 0;
     loop {
-        let before = simplex.ids();
-        let v = match simplex.solve() {
+        let w = pair.support(direction);
+        iterations += 1;
+        if iterations > 1 {
+            // w . v / |v| is a lower bound: beyond `reach`, certainly apart.
+            // Compared squared so polygons (reach 0) need no square root.
+            let vw = v.dot(w.w);
+            if vw > R::ZERO && vw * vw > reach2 * vv {
+                return (false, iterations, Status::Converged);
+            }
+            // A vertex of the simplex before its reduction (which only drops
+            // vertices, so this covers the reduced simplex too): no progress.
+            if repeats(&before, w.id) {
+                return (false, iterations, Status::Converged);
+            }
+            if w.id == NO_ID && vw > R::ZERO {
+                let tolerance = *tolerance.get_or_insert_with(|| epsilon * pair.scale());
+                if vv - vw <= tolerance * vv.sqrt() {
+                    return (false, iterations, Status::Converged);
+                }
+            }
+        }
+        simplex.push(Vertex::from_minkowski(&w));
+        before = simplex.ids();
+        v = match simplex.solve() {
             Closest::Enclosed => return (true, iterations, Status::Converged),
             Closest::Point(v) => v,
         };
-        let vv = v.length_squared();
+        vv = v.length_squared();
         // |v| is an upper bound of the core distance.
         if vv <= reach2 {
             return (true, iterations, Status::Converged);
@@ -206,25 +233,6 @@ where
         if iterations >= max_iterations {
             return (false, iterations, Status::IterationLimit);
         }
-        let w = pair.support(-v);
-        iterations += 1;
-        // w . v / |v| is a lower bound: beyond `reach`, certainly apart.
-        // Compared squared so polygons (reach 0) need no square root.
-        let vw = v.dot(w.w);
-        if vw > R::ZERO && vw * vw > reach2 * vv {
-            return (false, iterations, Status::Converged);
-        }
-        // A vertex of the simplex before its reduction (which only drops
-        // vertices, so this covers the reduced simplex too): no progress.
-        if repeats(&before, w.id) {
-            return (false, iterations, Status::Converged);
-        }
-        if w.id == NO_ID && vw > R::ZERO {
-            let tolerance = *tolerance.get_or_insert_with(|| epsilon * pair.scale());
-            if vv - vw <= tolerance * vv.sqrt() {
-                return (false, iterations, Status::Converged);
-            }
-        }
-        simplex.push(Vertex::from_minkowski(&w));
+        direction = -v;
     }
 }

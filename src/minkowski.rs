@@ -123,16 +123,20 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     #[inline(always)]
     fn rotate(&self, v: V2<R>) -> V2<R> {
-        if self.rotated {
-            V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
-        } else {
-            v
-        }
+        self.turn(v, self.sin)
     }
+    /// The inverse rotation is the rotation by `-sin`, to the bit: negation
+    /// is exact, and `a - (-b)` rounds as `a + b`.
     #[inline(always)]
     fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
+        self.turn(v, -self.sin)
+    }
+    /// `v` rotated by (`cos`, `sin`), or left as it is when the shapes are
+    /// not rotated relative to each other.
+    #[inline(always)]
+    fn turn(&self, v: V2<R>, sin: R) -> V2<R> {
         if self.rotated {
-            V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
+            V2::new(self.cos * v.x - sin * v.y, sin * v.x + self.cos * v.y)
         } else {
             v
         }

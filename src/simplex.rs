@@ -15,7 +15,7 @@ use crate::minkowski::{MinkowskiVertex, NO_ID};
 use crate::real::{Real, V2};
 
 /// What a simplex vertex carries besides its Minkowski point.
-pub(crate) trait Payload<R>: Copy {
+pub(crate) trait Payload<R>: Copy + Default {
     fn from_vertex(v: &MinkowskiVertex<R>) -> Self;
     /// The vertex's barycentric weight in the closest point: kept only where
     /// closest points are wanted, so the other queries neither store nor
@@ -83,6 +83,12 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         Self { verts: [first; 3], len: 1 }
     }
 
+    /// No vertex yet: for a loop whose one support call fills it.
+    pub fn empty() -> Self {
+        let none = Vertex { w: V2::zero(), id: NO_ID, payload: P::default() };
+        Self { verts: [none; 3], len: 0 }
+    }
+
     pub fn vertices(&self) -> impl Iterator<Item = &Vertex<R, P>> {
         self.verts.iter().take(self.len)
     }
@@ -90,11 +96,8 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     /// The ids of the vertices, [`NO_ID`] for empty slots: what the loops
     /// compare new supports against.
     pub fn ids(&self) -> [u32; 3] {
-        let mut ids = [NO_ID; 3];
-        for (slot, v) in ids.iter_mut().zip(self.vertices()) {
-            *slot = v.id;
-        }
-        ids
+        let id = |k: usize| if k < self.len { self.verts[k].id } else { NO_ID };
+        [id(0), id(1), id(2)]
     }
 
     /// Appends a vertex; a full simplex (which the loops never push to)
@@ -285,7 +288,9 @@ fn closest_triangle_edge<R: Real>(w: &[V2<R>; 3]) -> Option<EdgeFoot<R>> {
     // The origin is on the inner side of edge i->j when cross(wi, wj)
     // has the sign of the area (zero counts as inside: touching).
     let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
-    let outside = |side: R| {
+    // Each side's verdict once: the closure inlined twice (the enclosure
+    // test and the edge loop) cost flash.
+    let outside = sides.map(|side| {
         if area > R::ZERO {
             side < R::ZERO
         } else if area < R::ZERO {
@@ -293,16 +298,17 @@ fn closest_triangle_edge<R: Real>(w: &[V2<R>; 3]) -> Option<EdgeFoot<R>> {
         } else {
             true
         }
-    };
-    if area != R::ZERO && !sides.iter().any(|&s| outside(s)) {
+    });
+    // A flat triangle (area zero) has every side outside: never enclosing.
+    if !outside.contains(&true) {
         return None;
     }
     // The closest point lies on an edge the origin is outside of; a
     // degenerate (flat) triangle tries all three.
     const EDGES: [(usize, usize); 3] = [(0, 1), (1, 2), (2, 0)];
     let mut best: Option<(EdgeFoot<R>, R)> = None;
-    for (&edge, &side) in EDGES.iter().zip(sides.iter()) {
-        if outside(side) {
+    for (&edge, &outside) in EDGES.iter().zip(outside.iter()) {
+        if outside {
             let foot = segment_foot(w[edge.0], w[edge.1]);
             let vv = foot.1.length_squared();
             if best.as_ref().is_none_or(|b| vv < b.1) {
