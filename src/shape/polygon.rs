@@ -60,7 +60,9 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     /// The vertices, counter-clockwise, relative to the reference point.
     #[inline(always)]
     fn vertices(&self) -> &[V2<R>] {
-        self.vertices.get(..self.len).unwrap_or(&[])
+        // Clamped rather than checked: `len <= N` always holds, and the
+        // compiler sees from the clamp that the slice cannot panic.
+        &self.vertices[..self.len.min(N)]
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
