@@ -864,3 +864,56 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
         }
     }
 }
+
+/// Polygons the compiler checked and framed (`Polygon::from_array`, run by
+/// rustc's const evaluator on the build machine) are bit for bit the ones
+/// this target builds at run time (`Polygon::new`): one more determinism
+/// check, between the build host and the device.
+macro_rules! const_polygons {
+    ($name:ident, $R:ty, $V:ty) => {
+        pub fn $name(t: &mut Tally) {
+            const fn frozen<const N: usize>(points: [$V; N]) -> Polygon<$R, N> {
+                match Polygon::<$R, N>::from_array(points) {
+                    Ok(p) => p,
+                    Err(e) => panic!("{}", e.as_str()),
+                }
+            }
+            // Clockwise, with a collinear vertex; far from the origin; tiny.
+            const CW: [$V; 5] = [
+                <$V>::new(0.0, 0.0),
+                <$V>::new(0.25, 3.0),
+                <$V>::new(0.5, 6.0),
+                <$V>::new(7.0, 0.5),
+                <$V>::new(3.0, -1.0),
+            ];
+            const FAR: [$V; 4] = [
+                <$V>::new(1.0e5 + 0.1, -2.0e5),
+                <$V>::new(1.0e5 + 3.3, -2.0e5 + 0.7),
+                <$V>::new(1.0e5 + 1.9, -2.0e5 + 2.9),
+                <$V>::new(1.0e5 - 0.3, -2.0e5 + 1.3),
+            ];
+            const TINY: [$V; 3] = [<$V>::new(1.0e-20, 3.0e-20), <$V>::new(-2.0e-20, 1.0e-20), <$V>::new(0.7e-20, -2.1e-20)];
+            const BUILT_CW: Polygon<$R, 5> = frozen(CW);
+            const BUILT_FAR: Polygon<$R, 4> = frozen(FAR);
+            const BUILT_TINY: Polygon<$R, 3> = frozen(TINY);
+            // Through `black_box`: folded by the compiler, the run-time
+            // polygon would be computed on the build machine too.
+            fn same<const N: usize>(points: &[$V; N], frozen: &Polygon<$R, N>) -> bool {
+                let Ok(built) = Polygon::<$R, N>::new(core::hint::black_box(points)) else {
+                    return false;
+                };
+                let bits = |v: $V| (v.x.to_bits(), v.y.to_bits());
+                (0..N).all(|i| built.vertex(i).map(bits) == frozen.vertex(i).map(bits))
+                    && bits(built.centroid()) == bits(frozen.centroid())
+                    && bits(built.reference_point()) == bits(frozen.reference_point())
+                    && built.bounding_radius_squared().to_bits() == frozen.bounding_radius_squared().to_bits()
+            }
+            t.ok("const polygon = run-time polygon (clockwise, collinear)", same(&CW, &BUILT_CW));
+            t.ok("const polygon = run-time polygon (far)", same(&FAR, &BUILT_FAR));
+            t.ok("const polygon = run-time polygon (tiny)", same(&TINY, &BUILT_TINY));
+        }
+    };
+}
+
+const_polygons!(const_polygons_f32, f32, gjk2d::glam::Vec2);
+const_polygons!(const_polygons_f64, f64, gjk2d::glam::DVec2);

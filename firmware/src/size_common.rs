@@ -109,6 +109,45 @@ pub fn with_polygons<R: Io>(f: impl FnOnce(&Polygon<R, 8>, &Polygon<R, 8>, &Tran
     }
 }
 
+/// The same two unit squares as constants, checked when the firmware is
+/// compiled (`Polygon::from_array`): a firmware with fixed shapes links no
+/// polygon checks. Read through `black_box`, so the queries cannot be
+/// specialised to the known vertices.
+static SQUARE: Polygon<f32, 4> = match Polygon::<f32, 4>::from_array([
+    gjk2d::glam::Vec2::new(0.0, 0.0),
+    gjk2d::glam::Vec2::new(1.0, 0.0),
+    gjk2d::glam::Vec2::new(1.0, 1.0),
+    gjk2d::glam::Vec2::new(0.0, 1.0),
+]) {
+    Ok(square) => square,
+    Err(e) => panic!("{}", e.as_str()),
+};
+
+/// [`with_polygons`] for constant polygons: only B's placement is an input.
+pub fn with_const_polygons(f: impl FnOnce(&Polygon<f32, 4>, &Polygon<f32, 4>, &Transform<f32>)) {
+    let (a, b) = (core::hint::black_box(&SQUARE), core::hint::black_box(&SQUARE));
+    if let Ok(tb) = Transform::from_cos_sin(vec::<f32>(16), f32::input(18), f32::input(19)) {
+        f(a, b, &tb);
+    }
+}
+
+/// The firmware of one size row: where its polygons come from
+/// ([`with_polygons`] or [`with_const_polygons`]) and the queries it links,
+/// each run on the pair.
+#[allow(unused_macros)] // not by the empty and the every-shape firmwares
+macro_rules! polygon_firmware {
+    ($polygons:expr => $($query:ident),+) => {
+        #[cortex_m_rt::entry]
+        fn main() -> ! {
+            let gjk = gjk2d::Gjk::<f32>::new();
+            $polygons(|a, b, tb| {
+                $(common::$query(&gjk, a, b, tb);)+
+            });
+            loop {}
+        }
+    };
+}
+
 pub fn intersects<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
     gjk: &Gjk<R>,
     a: &A,
@@ -147,6 +186,11 @@ pub fn penetration<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
         p.error_bound.sink();
         sink_u32(p.iterations | (p.status as u32) << 16);
     }
+}
+
+/// [`raycast`] against B, in the shape of the pair queries.
+pub fn raycast_b<R: Io, A: ?Sized, B: SupportMap<R> + ?Sized>(gjk: &Gjk<R>, _: &A, b: &B, tb: &Transform<R>) {
+    raycast(gjk, b, tb);
 }
 
 pub fn raycast<R: Io, S: SupportMap<R> + ?Sized>(gjk: &Gjk<R>, shape: &S, t: &Transform<R>) {

@@ -14,9 +14,11 @@ fn main() -> ! {
     let mut t = Tally::new();
     t.context = "f32";
     kat::run::<f32>(&mut t);
+    kat::const_polygons_f32(&mut t);
     let after_f32 = t.passed + t.failed;
     t.context = "f64";
     kat::run::<f64>(&mut t);
+    kat::const_polygons_f64(&mut t);
     hprintln!(
         "checks: {} in f32, {} in f64",
         after_f32,

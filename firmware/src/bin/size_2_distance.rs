@@ -1,16 +1,9 @@
-//! Size firmware: polygon intersection + distance (f32).
+//! Size firmware: polygon intersection + distance (f32), with the polygons built at run time (`Polygon::new`).
 #![no_std]
 #![no_main]
 
 #[path = "../size_common.rs"]
+#[macro_use]
 mod common;
 
-#[cortex_m_rt::entry]
-fn main() -> ! {
-    let gjk = gjk2d::Gjk::<f32>::new();
-    common::with_polygons::<f32>(|a, b, tb| {
-        common::intersects(&gjk, a, b, tb);
-        common::distance(&gjk, a, b, tb);
-    });
-    loop {}
-}
+polygon_firmware!(common::with_polygons::<f32> => intersects, distance);
