@@ -18,11 +18,7 @@ impl Default for Tally {
 
 impl Tally {
     pub const fn new() -> Self {
-        Self {
-            passed: 0,
-            failed: 0,
-            context: "",
-        }
+        Self { passed: 0, failed: 0, context: "" }
     }
 
     pub fn ok(&mut self, name: &str, ok: bool) -> bool {

@@ -4,8 +4,8 @@
 
 use crate::harness::Tally;
 use gjk2d::{
-    Capsule, Circle, Ellipse, Epa, Gjk, GjkConfig, HalfEllipse, Polygon, Ray, RayOutcome, Real,
-    Rectangle, Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
+    Capsule, Circle, Ellipse, Epa, Gjk, GjkConfig, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded,
+    Segment, Slice, Status, SupportMap, Transform, Triangle,
 };
 
 fn r<R: Real>(x: f64) -> R {
@@ -38,17 +38,9 @@ pub struct Tol<R> {
 impl<R: Real> Tol<R> {
     pub fn new() -> Self {
         if is_f32::<R>() {
-            Tol {
-                exact: r(1e-5),
-                curved: r(5e-5),
-                curved_dir: r(5e-3),
-            }
+            Tol { exact: r(1e-5), curved: r(5e-5), curved_dir: r(5e-3) }
         } else {
-            Tol {
-                exact: r(1e-13),
-                curved: r(5e-11),
-                curved_dir: r(5e-6),
-            }
+            Tol { exact: r(1e-13), curved: r(5e-11), curved_dir: r(5e-6) }
         }
     }
 }
@@ -90,11 +82,7 @@ const DEPTH: f64 = 0.25;
 /// (hit at distance 2, miss above, start inside, stop short).
 fn wall_case<R: Real>(t: &mut Tally, gjk: &Gjk<R>, wall: &Polygon<R, 4>, c: &WallCase<R>) {
     let tol = Tol::<R>::new();
-    let (pt, dt) = if c.curved {
-        (tol.curved_dir, tol.curved)
-    } else {
-        (tol.exact, tol.exact)
-    };
+    let (pt, dt) = if c.curved { (tol.curved_dir, tol.curved) } else { (tol.exact, tol.exact) };
     let id = Transform::<R>::IDENTITY;
     let place = |x: f64| Transform::<R>::from_cos_sin(R::vector(r(x), R::ZERO), r(c.cos), r(c.sin));
     let (apart, over) = match (place(1.0 + GAP + c.left), place(1.0 - DEPTH + c.left)) {
@@ -107,14 +95,8 @@ fn wall_case<R: Real>(t: &mut Tally, gjk: &Gjk<R>, wall: &Polygon<R, 4>, c: &Wal
     let mut name = Name::new(c.name);
 
     // Intersection.
-    t.ok(
-        name.with(" intersects apart = false"),
-        !gjk.intersects(wall, &id, c.shape, &apart).intersecting,
-    );
-    t.ok(
-        name.with(" intersects overlapping = true"),
-        gjk.intersects(wall, &id, c.shape, &over).intersecting,
-    );
+    t.ok(name.with(" intersects apart = false"), !gjk.intersects(wall, &id, c.shape, &apart).intersecting);
+    t.ok(name.with(" intersects overlapping = true"), gjk.intersects(wall, &id, c.shape, &over).intersecting);
 
     // Distance and closest points.
     match gjk.distance(wall, &id, c.shape, &apart) {
@@ -123,29 +105,18 @@ fn wall_case<R: Real>(t: &mut Tally, gjk: &Gjk<R>, wall: &Polygon<R, 4>, c: &Wal
         }
         Some(s) => {
             t.near(name.with(" distance"), s.distance, r(GAP), dt);
-            t.near_v(
-                name.with(" distance normal"),
-                s.normal,
-                (R::ONE, R::ZERO),
-                pt,
-            );
+            t.near_v(name.with(" distance normal"), s.normal, (R::ONE, R::ZERO), pt);
             let (ax, ay) = R::components(s.point_a);
             let (bx, by) = R::components(s.point_b);
             t.near(name.with(" point_a.x"), ax, R::ONE, pt);
             t.within(name.with(" point_a.y"), ay, r(c.ylo), r(c.yhi), pt);
             t.near(name.with(" point_b.x"), bx, r(1.0 + GAP), pt);
             t.near(name.with(" point_b.y = point_a.y"), by, ay, pt);
-            t.ok(
-                name.with(" distance converged"),
-                s.status == Status::Converged,
-            );
+            t.ok(name.with(" distance converged"), s.status == Status::Converged);
             t.ok(name.with(" distance error bound"), s.error_bound <= dt);
         }
     }
-    t.ok(
-        name.with(" distance overlapping = None"),
-        gjk.distance(wall, &id, c.shape, &over).is_none(),
-    );
+    t.ok(name.with(" distance overlapping = None"), gjk.distance(wall, &id, c.shape, &over).is_none());
 
     // Penetration.
     match gjk.penetration(wall, &id, c.shape, &over) {
@@ -154,41 +125,19 @@ fn wall_case<R: Real>(t: &mut Tally, gjk: &Gjk<R>, wall: &Polygon<R, 4>, c: &Wal
         }
         Some(p) => {
             t.near(name.with(" depth"), p.depth, r(DEPTH), dt);
-            t.near_v(
-                name.with(" penetration normal"),
-                p.normal,
-                (R::ONE, R::ZERO),
-                pt,
-            );
-            t.ok(
-                name.with(" penetration converged"),
-                p.status == Status::Converged,
-            );
+            t.near_v(name.with(" penetration normal"), p.normal, (R::ONE, R::ZERO), pt);
+            t.ok(name.with(" penetration converged"), p.status == Status::Converged);
             t.ok(name.with(" penetration error bound"), p.error_bound <= dt);
         }
     }
-    t.ok(
-        name.with(" penetration apart = None"),
-        gjk.penetration(wall, &id, c.shape, &apart).is_none(),
-    );
+    t.ok(name.with(" penetration apart = None"), gjk.penetration(wall, &id, c.shape, &apart).is_none());
 
     // Ray casts against the shape alone, placed apart.
     let face = 1.0 + GAP; // x of the leftmost point
     let ymid = 0.5 * (c.ylo + c.yhi);
-    let rt = if c.ray_iterates {
-        tol.curved
-    } else {
-        tol.exact
-    };
-    let rn = if c.ray_iterates || c.curved {
-        tol.curved_dir
-    } else {
-        tol.exact
-    };
-    if let Ok(ray) = Ray::new(
-        R::vector(r(face - 2.0), r(ymid)),
-        R::vector(R::ONE, R::ZERO),
-    ) {
+    let rt = if c.ray_iterates { tol.curved } else { tol.exact };
+    let rn = if c.ray_iterates || c.curved { tol.curved_dir } else { tol.exact };
+    if let Ok(ray) = Ray::new(R::vector(r(face - 2.0), r(ymid)), R::vector(R::ONE, R::ZERO)) {
         let cast = gjk.raycast(&ray, R::ZERO, c.shape, &apart);
         match cast.outcome {
             RayOutcome::Hit(h) => {
@@ -197,44 +146,23 @@ fn wall_case<R: Real>(t: &mut Tally, gjk: &Gjk<R>, wall: &Polygon<R, 4>, c: &Wal
                 if !c.vertex {
                     t.near_v(name.with(" ray normal"), h.normal, (-R::ONE, R::ZERO), rn);
                 }
-                t.ok(
-                    name.with(" ray converged"),
-                    cast.status == Status::Converged,
-                );
-                t.ok(
-                    name.with(" ray iterations"),
-                    (cast.iterations > 0) == c.ray_iterates,
-                );
+                t.ok(name.with(" ray converged"), cast.status == Status::Converged);
+                t.ok(name.with(" ray iterations"), (cast.iterations > 0) == c.ray_iterates);
             }
             _ => {
                 t.ok(name.with(" ray hits"), false);
             }
         }
         // Bounded: a maximum length short of the hit misses, a longer one hits.
-        t.ok(
-            name.with(" ray max 1.5 misses"),
-            gjk.raycast(&ray, r(1.5), c.shape, &apart).outcome == RayOutcome::Miss,
-        );
-        t.ok(
-            name.with(" ray max 2.5 hits"),
-            gjk.raycast(&ray, r(2.5), c.shape, &apart).hit().is_some(),
-        );
+        t.ok(name.with(" ray max 1.5 misses"), gjk.raycast(&ray, r(1.5), c.shape, &apart).outcome == RayOutcome::Miss);
+        t.ok(name.with(" ray max 2.5 hits"), gjk.raycast(&ray, r(2.5), c.shape, &apart).hit().is_some());
     }
-    if let Ok(ray) = Ray::new(
-        R::vector(r(face - 2.0), r(30.0)),
-        R::vector(R::ONE, R::ZERO),
-    ) {
-        t.ok(
-            name.with(" ray above misses"),
-            gjk.raycast(&ray, R::ZERO, c.shape, &apart).outcome == RayOutcome::Miss,
-        );
+    if let Ok(ray) = Ray::new(R::vector(r(face - 2.0), r(30.0)), R::vector(R::ONE, R::ZERO)) {
+        t.ok(name.with(" ray above misses"), gjk.raycast(&ray, R::ZERO, c.shape, &apart).outcome == RayOutcome::Miss);
     }
     let inside = apart.transform_point(R::vector(r(c.inside.0), r(c.inside.1)));
     if let Ok(ray) = Ray::new(inside, R::vector(R::ZERO, R::ONE)) {
-        t.ok(
-            name.with(" ray from inside"),
-            gjk.raycast(&ray, R::ZERO, c.shape, &apart).outcome == RayOutcome::Inside,
-        );
+        t.ok(name.with(" ray from inside"), gjk.raycast(&ray, R::ZERO, c.shape, &apart).outcome == RayOutcome::Inside);
     }
 }
 
@@ -267,12 +195,9 @@ pub fn run<R: Real>(t: &mut Tally) {
     let tol = Tol::<R>::new();
     let gjk = Gjk::<R>::new();
     let id = Transform::<R>::IDENTITY;
-    let Ok(wall) = Polygon::<R, 4>::new(&[
-        v::<R>(-1.0, -10.0),
-        v::<R>(1.0, -10.0),
-        v::<R>(1.0, 10.0),
-        v::<R>(-1.0, 10.0),
-    ]) else {
+    let Ok(wall) =
+        Polygon::<R, 4>::new(&[v::<R>(-1.0, -10.0), v::<R>(1.0, -10.0), v::<R>(1.0, 10.0), v::<R>(-1.0, 10.0)])
+    else {
         t.ok("wall polygon", false);
         return;
     };
@@ -336,12 +261,7 @@ pub fn run<R: Real>(t: &mut Tally) {
     );
     // Unit square [0,1]^2: flat left face x = 0, y in [0, 1].
     case!(
-        Polygon::<R, 4>::new(&[
-            v::<R>(0.0, 0.0),
-            v::<R>(1.0, 0.0),
-            v::<R>(1.0, 1.0),
-            v::<R>(0.0, 1.0)
-        ]),
+        Polygon::<R, 4>::new(&[v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)]),
         "square",
         cos = 1.0,
         sin = 0.0,
@@ -355,12 +275,7 @@ pub fn run<R: Real>(t: &mut Tally) {
     );
     // Diamond (given clockwise, which the constructor reverses): vertex (0, 0) leftmost.
     case!(
-        Polygon::<R, 6>::new(&[
-            v::<R>(0.0, 0.0),
-            v::<R>(1.0, 1.0),
-            v::<R>(2.0, 0.0),
-            v::<R>(1.0, -1.0)
-        ]),
+        Polygon::<R, 6>::new(&[v::<R>(0.0, 0.0), v::<R>(1.0, 1.0), v::<R>(2.0, 0.0), v::<R>(1.0, -1.0)]),
         "diamond",
         cos = 1.0,
         sin = 0.0,
@@ -548,8 +463,7 @@ pub fn run<R: Real>(t: &mut Tally) {
     // Triangle (0,0), (2,-1), (2,1) rounded by 0.5: the apex's disk gives the
     // leftmost point (-0.5, 0) (the apex's normal cone contains -x).
     case!(
-        Triangle::<R>::new(v::<R>(0.0, 0.0), v::<R>(2.0, -1.0), v::<R>(2.0, 1.0))
-            .and_then(|s| Rounded::new(s, r(0.5))),
+        Triangle::<R>::new(v::<R>(0.0, 0.0), v::<R>(2.0, -1.0), v::<R>(2.0, 1.0)).and_then(|s| Rounded::new(s, r(0.5))),
         "rounded triangle",
         cos = 1.0,
         sin = 0.0,
@@ -569,25 +483,15 @@ pub fn run<R: Real>(t: &mut Tally) {
 /// rotated rays, and EPA at a small capacity.
 fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) {
     let e = tol.exact;
-    let at = |x: f64, y: f64| {
-        Transform::<R>::from_translation(v::<R>(x, y)).unwrap_or(Transform::IDENTITY)
-    };
-    let Ok(square) = Polygon::<R, 4>::new(&[
-        v::<R>(0.0, 0.0),
-        v::<R>(1.0, 0.0),
-        v::<R>(1.0, 1.0),
-        v::<R>(0.0, 1.0),
-    ]) else {
+    let at = |x: f64, y: f64| Transform::<R>::from_translation(v::<R>(x, y)).unwrap_or(Transform::IDENTITY);
+    let Ok(square) = Polygon::<R, 4>::new(&[v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)])
+    else {
         t.ok("square", false);
         return;
     };
 
     // Unit squares [0,1]^2: B at (2, 0) is 1 apart along +x.
-    t.ok(
-        "squares (2,0) apart",
-        !gjk.intersects(&square, id, &square, &at(2.0, 0.0))
-            .intersecting,
-    );
+    t.ok("squares (2,0) apart", !gjk.intersects(&square, id, &square, &at(2.0, 0.0)).intersecting);
     match gjk.distance(&square, id, &square, &at(2.0, 0.0)) {
         Some(s) => {
             t.near("squares (2,0) distance", s.distance, R::ONE, e);
@@ -602,12 +506,7 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
     match gjk.distance(&square, id, &square, &at(2.0, 2.0)) {
         Some(s) => {
             let h = r::<R>(core::f64::consts::FRAC_1_SQRT_2);
-            t.near(
-                "squares (2,2) distance",
-                s.distance,
-                r(core::f64::consts::SQRT_2),
-                e,
-            );
+            t.near("squares (2,2) distance", s.distance, r(core::f64::consts::SQRT_2), e);
             t.near_v("squares (2,2) normal", s.normal, (h, h), e);
             t.near_v("squares (2,2) point_a", s.point_a, (R::ONE, R::ONE), e);
             t.near_v("squares (2,2) point_b", s.point_b, (r(2.0), r(2.0)), e);
@@ -617,11 +516,7 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
         }
     }
     // B at (0.75, 0.5): overlap 0.25 in x, 0.5 in y: depth 0.25 along +x.
-    t.ok(
-        "squares (0.75,0.5) intersect",
-        gjk.intersects(&square, id, &square, &at(0.75, 0.5))
-            .intersecting,
-    );
+    t.ok("squares (0.75,0.5) intersect", gjk.intersects(&square, id, &square, &at(0.75, 0.5)).intersecting);
     match gjk.penetration(&square, id, &square, &at(0.75, 0.5)) {
         Some(p) => {
             t.near("squares (0.75,0.5) depth", p.depth, r(0.25), e);
@@ -668,10 +563,7 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
             }
         }
         // B at (1.2, 0): depth 1 + 0.5 - 1.2 = 0.3 along +x.
-        t.ok(
-            "circles (1.2,0) intersect",
-            gjk.intersects(&a, id, &b, &at(1.2, 0.0)).intersecting,
-        );
+        t.ok("circles (1.2,0) intersect", gjk.intersects(&a, id, &b, &at(1.2, 0.0)).intersecting);
         match gjk.penetration(&a, id, &b, &at(1.2, 0.0)) {
             Some(p) => {
                 t.near("circles depth", p.depth, r(0.3), e);
@@ -683,10 +575,7 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
         }
         // Ray from the origin along (0.6, 0.8) to a circle r 5 at (6, 8):
         // enters at distance 10 - 5 = 5, point (3, 4), normal (-0.6, -0.8).
-        if let (Ok(big), Ok(ray)) = (
-            Circle::<R>::new(r(5.0)),
-            Ray::new(v::<R>(0.0, 0.0), v::<R>(3.0, 4.0)),
-        ) {
+        if let (Ok(big), Ok(ray)) = (Circle::<R>::new(r(5.0)), Ray::new(v::<R>(0.0, 0.0), v::<R>(3.0, 4.0))) {
             match gjk.raycast(&ray, R::ZERO, &big, &at(6.0, 8.0)).outcome {
                 RayOutcome::Hit(h) => {
                     t.near("circle ray distance", h.distance, r(5.0), e);
@@ -721,12 +610,7 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
         match gjk.penetration(&c, id, &c, &at(0.0, 0.8)) {
             Some(p) => {
                 t.near("capsules depth", p.depth, r(0.2), e);
-                t.near_v(
-                    "capsules penetration normal",
-                    p.normal,
-                    (R::ZERO, R::ONE),
-                    e,
-                );
+                t.near_v("capsules penetration normal", p.normal, (R::ZERO, R::ONE), e);
             }
             None => {
                 t.ok("capsules penetration", false);
@@ -737,31 +621,13 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
     // Ellipses 4 x 2 at the origin and 2 x 4 at (4, 0): tips (2, 0) and
     // (3, 0), 1 apart along +x. At (2.75, 0) they overlap by 0.25 along +x
     // (the depth along angle a from +x grows as 0.25 + 2.125 a^2).
-    if let (Ok(a), Ok(b)) = (
-        Ellipse::<R>::new(r(4.0), r(2.0)),
-        Ellipse::<R>::new(r(2.0), r(4.0)),
-    ) {
+    if let (Ok(a), Ok(b)) = (Ellipse::<R>::new(r(4.0), r(2.0)), Ellipse::<R>::new(r(2.0), r(4.0))) {
         match gjk.distance(&a, id, &b, &at(4.0, 0.0)) {
             Some(s) => {
                 t.near("ellipses distance", s.distance, R::ONE, tol.curved);
-                t.near_v(
-                    "ellipses normal",
-                    s.normal,
-                    (R::ONE, R::ZERO),
-                    tol.curved_dir,
-                );
-                t.near_v(
-                    "ellipses point_a",
-                    s.point_a,
-                    (r(2.0), R::ZERO),
-                    tol.curved_dir,
-                );
-                t.near_v(
-                    "ellipses point_b",
-                    s.point_b,
-                    (r(3.0), R::ZERO),
-                    tol.curved_dir,
-                );
+                t.near_v("ellipses normal", s.normal, (R::ONE, R::ZERO), tol.curved_dir);
+                t.near_v("ellipses point_a", s.point_a, (r(2.0), R::ZERO), tol.curved_dir);
+                t.near_v("ellipses point_b", s.point_b, (r(3.0), R::ZERO), tol.curved_dir);
             }
             None => {
                 t.ok("ellipses distance", false);
@@ -772,23 +638,11 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
         // bounds that still hold. Either way: depth <= 0.25 <= depth + bound.
         match gjk.penetration(&a, id, &b, &at(2.75, 0.0)) {
             Some(p) => {
-                let ok_status = p.status == Status::Converged
-                    || (!is_f32::<R>() && p.status == Status::CapacityLimit);
+                let ok_status = p.status == Status::Converged || (!is_f32::<R>() && p.status == Status::CapacityLimit);
                 t.ok("ellipses penetration (N = 32) status", ok_status);
-                t.ok(
-                    "ellipses penetration (N = 32) lower bound",
-                    p.depth <= r::<R>(0.25) + tol.curved,
-                );
-                t.ok(
-                    "ellipses penetration (N = 32) upper bound",
-                    p.depth + p.error_bound >= r::<R>(0.25) - tol.curved,
-                );
-                t.near_v(
-                    "ellipses penetration (N = 32) normal",
-                    p.normal,
-                    (R::ONE, R::ZERO),
-                    tol.curved_dir * r(10.0),
-                );
+                t.ok("ellipses penetration (N = 32) lower bound", p.depth <= r::<R>(0.25) + tol.curved);
+                t.ok("ellipses penetration (N = 32) upper bound", p.depth + p.error_bound >= r::<R>(0.25) - tol.curved);
+                t.near_v("ellipses penetration (N = 32) normal", p.normal, (R::ONE, R::ZERO), tol.curved_dir * r(10.0));
             }
             None => {
                 t.ok("ellipses penetration (N = 32)", false);
@@ -799,16 +653,8 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
         match roomy.penetration(&a, id, &b, &at(2.75, 0.0)) {
             Some(p) => {
                 t.near("ellipses depth (N = 64)", p.depth, r(0.25), tol.curved);
-                t.near_v(
-                    "ellipses penetration normal (N = 64)",
-                    p.normal,
-                    (R::ONE, R::ZERO),
-                    tol.curved_dir,
-                );
-                t.ok(
-                    "ellipses penetration converged (N = 64)",
-                    p.status == Status::Converged,
-                );
+                t.near_v("ellipses penetration normal (N = 64)", p.normal, (R::ONE, R::ZERO), tol.curved_dir);
+                t.ok("ellipses penetration converged (N = 64)", p.status == Status::Converged);
             }
             None => {
                 t.ok("ellipses penetration (N = 64)", false);
@@ -840,22 +686,14 @@ fn pairs<R: Real>(t: &mut Tally, gjk: &Gjk<R>, id: &Transform<R>, tol: &Tol<R>) 
     let s = core::f64::consts::FRAC_1_SQRT_2;
     if let (Ok(tf), Ok(ray)) = (
         Transform::<R>::new(v::<R>(0.0, 0.0), r(core::f64::consts::FRAC_PI_4)),
-        Ray::new(
-            v::<R>(0.5 * s + 3.0 * s, 1.5 * s + 3.0 * s),
-            v::<R>(-1.0, -1.0),
-        ),
+        Ray::new(v::<R>(0.5 * s + 3.0 * s, 1.5 * s + 3.0 * s), v::<R>(-1.0, -1.0)),
     ) {
         match gjk.raycast(&ray, R::ZERO, &square, &tf).outcome {
             RayOutcome::Hit(h) => {
                 // The rotation comes from sin and cos: a few ulps more.
                 let e4 = e * r(4.0);
                 t.near("rotated square ray distance", h.distance, r(3.0), e4);
-                t.near_v(
-                    "rotated square ray point",
-                    h.point,
-                    (r(0.5 * s), r(1.5 * s)),
-                    e4,
-                );
+                t.near_v("rotated square ray point", h.point, (r(0.5 * s), r(1.5 * s)), e4);
                 t.near_v("rotated square ray normal", h.normal, (r(s), r(s)), e4);
             }
             _ => {
@@ -892,7 +730,8 @@ macro_rules! const_polygons {
                 <$V>::new(1.0e5 + 1.9, -2.0e5 + 2.9),
                 <$V>::new(1.0e5 - 0.3, -2.0e5 + 1.3),
             ];
-            const TINY: [$V; 3] = [<$V>::new(1.0e-20, 3.0e-20), <$V>::new(-2.0e-20, 1.0e-20), <$V>::new(0.7e-20, -2.1e-20)];
+            const TINY: [$V; 3] =
+                [<$V>::new(1.0e-20, 3.0e-20), <$V>::new(-2.0e-20, 1.0e-20), <$V>::new(0.7e-20, -2.1e-20)];
             const BUILT_CW: Polygon<$R, 5> = frozen(CW);
             const BUILT_FAR: Polygon<$R, 4> = frozen(FAR);
             const BUILT_TINY: Polygon<$R, 3> = frozen(TINY);

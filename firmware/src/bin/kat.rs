@@ -19,21 +19,13 @@ fn main() -> ! {
     t.context = "f64";
     kat::run::<f64>(&mut t);
     kat::const_polygons_f64(&mut t);
-    hprintln!(
-        "checks: {} in f32, {} in f64",
-        after_f32,
-        t.passed + t.failed - after_f32
-    );
+    hprintln!("checks: {} in f32, {} in f64", after_f32, t.passed + t.failed - after_f32);
 
     hprintln!("golden hash f32 {:#018x}", golden::golden_hash_f32());
     hprintln!("golden hash f64 {:#018x}", golden::golden_hash_f64());
     hprintln!("golden hash {:#018x}", golden::golden_hash());
 
     hprintln!("{} passed, {} failed", t.passed, t.failed);
-    debug::exit(if t.failed == 0 {
-        debug::EXIT_SUCCESS
-    } else {
-        debug::EXIT_FAILURE
-    });
+    debug::exit(if t.failed == 0 { debug::EXIT_SUCCESS } else { debug::EXIT_FAILURE });
     loop {}
 }

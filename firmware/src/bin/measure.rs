@@ -19,15 +19,7 @@ struct Ctx {
 fn report(ctx: &Ctx, precision: &str, name: &str, iterations: u32, f: &dyn Fn()) {
     let ix100 = meter::instructions_x100(f, ctx.overhead);
     let stack = meter::stack_bytes(f);
-    hprintln!(
-        "MEASURE|{}|{}|{}|{}.{:02}|{}",
-        precision,
-        name,
-        iterations,
-        ix100 / 100,
-        ix100 % 100,
-        stack
-    );
+    hprintln!("MEASURE|{}|{}|{}|{}.{:02}|{}", precision, name, iterations, ix100 / 100, ix100 % 100, stack);
 }
 
 fn v<R: Real>(x: f64, y: f64) -> R::Vector {
@@ -36,12 +28,7 @@ fn v<R: Real>(x: f64, y: f64) -> R::Vector {
 
 fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     let gjk = Gjk::<R>::new();
-    let sq = [
-        v::<R>(0.0, 0.0),
-        v::<R>(1.0, 0.0),
-        v::<R>(1.0, 1.0),
-        v::<R>(0.0, 1.0),
-    ];
+    let sq = [v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)];
     let a = Polygon::<R, 8>::new(&sq).ok()?;
     let b = Polygon::<R, 8>::regular(6, R::from_f64(0.6)).ok()?;
     let ta = Transform::<R>::IDENTITY;
@@ -56,33 +43,15 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     let ray = Ray::<R>::new(v::<R>(-2.0, 0.3), v::<R>(1.0, 0.1)).ok()?;
 
     let it = |d: Option<u32>| d.unwrap_or(0);
-    report(
-        ctx,
-        p,
-        "intersects polygon4-hexagon, apart",
-        gjk.intersects(&a, &ta, &b, &apart).iterations,
-        &|| {
-            bb(gjk.intersects(bb(&a), bb(&ta), bb(&b), bb(&apart)));
-        },
-    );
-    report(
-        ctx,
-        p,
-        "intersects polygon4-hexagon, overlapping",
-        gjk.intersects(&a, &ta, &b, &over).iterations,
-        &|| {
-            bb(gjk.intersects(bb(&a), bb(&ta), bb(&b), bb(&over)));
-        },
-    );
-    report(
-        ctx,
-        p,
-        "distance polygon4-hexagon",
-        it(gjk.distance(&a, &ta, &b, &apart).map(|s| s.iterations)),
-        &|| {
-            bb(gjk.distance(bb(&a), bb(&ta), bb(&b), bb(&apart)));
-        },
-    );
+    report(ctx, p, "intersects polygon4-hexagon, apart", gjk.intersects(&a, &ta, &b, &apart).iterations, &|| {
+        bb(gjk.intersects(bb(&a), bb(&ta), bb(&b), bb(&apart)));
+    });
+    report(ctx, p, "intersects polygon4-hexagon, overlapping", gjk.intersects(&a, &ta, &b, &over).iterations, &|| {
+        bb(gjk.intersects(bb(&a), bb(&ta), bb(&b), bb(&over)));
+    });
+    report(ctx, p, "distance polygon4-hexagon", it(gjk.distance(&a, &ta, &b, &apart).map(|s| s.iterations)), &|| {
+        bb(gjk.distance(bb(&a), bb(&ta), bb(&b), bb(&apart)));
+    });
     report(
         ctx,
         p,
@@ -92,31 +61,17 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
             bb(gjk.penetration(bb(&a), bb(&ta), bb(&b), bb(&over)));
         },
     );
-    report(
-        ctx,
-        p,
-        "raycast polygon4 (closed form)",
-        gjk.raycast(&ray, R::ZERO, &a, &apart).iterations,
-        &|| {
-            bb(gjk.raycast(bb(&ray), R::ZERO, bb(&a), bb(&apart)));
-        },
-    );
-    report(
-        ctx,
-        p,
-        "intersects circle-polygon4",
-        gjk.intersects(&a, &ta, &circle, &over).iterations,
-        &|| {
-            bb(gjk.intersects(bb(&a), bb(&ta), bb(&circle), bb(&over)));
-        },
-    );
+    report(ctx, p, "raycast polygon4 (closed form)", gjk.raycast(&ray, R::ZERO, &a, &apart).iterations, &|| {
+        bb(gjk.raycast(bb(&ray), R::ZERO, bb(&a), bb(&apart)));
+    });
+    report(ctx, p, "intersects circle-polygon4", gjk.intersects(&a, &ta, &circle, &over).iterations, &|| {
+        bb(gjk.intersects(bb(&a), bb(&ta), bb(&circle), bb(&over)));
+    });
     report(
         ctx,
         p,
         "distance capsule-polygon4",
-        it(gjk
-            .distance(&a, &ta, &capsule, &apart)
-            .map(|s| s.iterations)),
+        it(gjk.distance(&a, &ta, &capsule, &apart).map(|s| s.iterations)),
         &|| {
             bb(gjk.distance(bb(&a), bb(&ta), bb(&capsule), bb(&apart)));
         },
@@ -125,31 +80,17 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
         ctx,
         p,
         "penetration capsule-polygon4",
-        it(gjk
-            .penetration(&a, &ta, &capsule, &over)
-            .map(|s| s.iterations)),
+        it(gjk.penetration(&a, &ta, &capsule, &over).map(|s| s.iterations)),
         &|| {
             bb(gjk.penetration(bb(&a), bb(&ta), bb(&capsule), bb(&over)));
         },
     );
-    report(
-        ctx,
-        p,
-        "raycast capsule (closed form)",
-        gjk.raycast(&ray, R::ZERO, &capsule, &apart).iterations,
-        &|| {
-            bb(gjk.raycast(bb(&ray), R::ZERO, bb(&capsule), bb(&apart)));
-        },
-    );
-    report(
-        ctx,
-        p,
-        "intersects ellipse-ellipse, apart",
-        gjk.intersects(&ea, &ta, &eb, &e_apart).iterations,
-        &|| {
-            bb(gjk.intersects(bb(&ea), bb(&ta), bb(&eb), bb(&e_apart)));
-        },
-    );
+    report(ctx, p, "raycast capsule (closed form)", gjk.raycast(&ray, R::ZERO, &capsule, &apart).iterations, &|| {
+        bb(gjk.raycast(bb(&ray), R::ZERO, bb(&capsule), bb(&apart)));
+    });
+    report(ctx, p, "intersects ellipse-ellipse, apart", gjk.intersects(&ea, &ta, &eb, &e_apart).iterations, &|| {
+        bb(gjk.intersects(bb(&ea), bb(&ta), bb(&eb), bb(&e_apart)));
+    });
     report(
         ctx,
         p,
@@ -163,22 +104,14 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
         ctx,
         p,
         "penetration ellipse-ellipse (EPA)",
-        it(gjk
-            .penetration(&ea, &ta, &eb, &e_over)
-            .map(|s| s.iterations)),
+        it(gjk.penetration(&ea, &ta, &eb, &e_over).map(|s| s.iterations)),
         &|| {
             bb(gjk.penetration(bb(&ea), bb(&ta), bb(&eb), bb(&e_over)));
         },
     );
-    report(
-        ctx,
-        p,
-        "raycast ellipse (GJK ray cast)",
-        gjk.raycast(&ray, R::ZERO, &ea, &e_apart).iterations,
-        &|| {
-            bb(gjk.raycast(bb(&ray), R::ZERO, bb(&ea), bb(&e_apart)));
-        },
-    );
+    report(ctx, p, "raycast ellipse (GJK ray cast)", gjk.raycast(&ray, R::ZERO, &ea, &e_apart).iterations, &|| {
+        bb(gjk.raycast(bb(&ray), R::ZERO, bb(&ea), bb(&e_apart)));
+    });
 
     // EPA's capacity N (polytope vertices on the stack).
     macro_rules! epa_n {
@@ -212,8 +145,7 @@ fn main() -> ! {
     let overhead = meter::ticks(&|| {});
     let known = meter::ticks(&|| meter::known_instructions(bb(5_000)));
     // REPEAT x (2 x 5000 + call) instructions.
-    let per_tick_x100 =
-        (meter::REPEAT * 10_000) as u64 * 100 / known.saturating_sub(overhead).max(1) as u64;
+    let per_tick_x100 = (meter::REPEAT * 10_000) as u64 * 100 / known.saturating_sub(overhead).max(1) as u64;
     hprintln!(
         "CALIBRATION|{} ticks for {} x 10000 instructions: {}.{:02} instructions per tick (expected {})|loop overhead {} ticks",
         known - overhead,
@@ -225,18 +157,7 @@ fn main() -> ! {
     );
     let ctx = Ctx { overhead };
     let ok = suite::<f32>(&ctx, "f32").is_some() & suite::<f64>(&ctx, "f64").is_some();
-    hprintln!(
-        "measure {}",
-        if ok {
-            "done"
-        } else {
-            "FAILED to build the shapes"
-        }
-    );
-    debug::exit(if ok {
-        debug::EXIT_SUCCESS
-    } else {
-        debug::EXIT_FAILURE
-    });
+    hprintln!("measure {}", if ok { "done" } else { "FAILED to build the shapes" });
+    debug::exit(if ok { debug::EXIT_SUCCESS } else { debug::EXIT_FAILURE });
     loop {}
 }
