@@ -185,12 +185,12 @@ where
     // The gap tolerance, for curved cores only (computed on first use).
     let mut tolerance = None;
     // One support call, at the top of the loop, for the first point too:
-    // a second inlined copy of it for the start would cost 0.2 KB of flash
-    // in a firmware with the intersection test alone.
+    // a second inlined copy of it for the start cost 48 B of flash in a
+    // firmware with the intersection test alone.
     let mut simplex: Simplex<R, ()> = Simplex::empty();
     let mut direction = first_direction(pair.centers);
     let (mut v, mut vv) = (V2::zero(), R::ZERO);
-    let mut before = simplex.ids();
+    let mut before = [NO_ID; 3];
     let mut previous = R::INFINITY;
     let mut iterations = 0;
     loop {

@@ -57,7 +57,8 @@ impl<R: Real> Transform<R> {
         if len == R::ZERO {
             return Err(Error::ZeroLength);
         }
-        // A unit (cos, sin) stays as given: division by exactly 1 is exact.
+        // A (cos, sin) whose length rounds to 1 stays as given: division by
+        // exactly 1 is exact.
         t.cos = cos / len;
         t.sin = sin / len;
         Ok(t)
@@ -103,13 +104,8 @@ impl<R: Real> Transform<R> {
 /// less with every shape).
 #[cfg_attr(target_os = "none", inline(never))]
 pub(crate) fn check_point<R: Real>(p: V2<R>) -> Result<V2<R>, Error> {
-    if !p.is_finite() {
-        Err(Error::NonFinite)
-    } else if p.max_abs() > R::MAX_COORDINATE {
-        Err(Error::OutOfRange)
-    } else {
-        Ok(p)
-    }
+    // The same check a constant polygon's vertices get at compile time.
+    R::check_point(p).map(|()| p)
 }
 
 /// A length (radius, half-extent) must be finite, positive and within range.

@@ -23,7 +23,7 @@ pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use half_ellipse::HalfEllipse;
 pub use polygon::Polygon;
-pub(crate) use polygon_frame::FramePolygon;
+pub(crate) use polygon_frame::ConstChecks;
 pub use rectangle::Rectangle;
 pub use rounded::Rounded;
 pub use segment::Segment;

@@ -32,9 +32,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     /// coordinates, repeated consecutive vertices, zero area, and any reflex
     /// turn or second winding. Collinear vertices on an edge are accepted.
     pub fn new(points: &[R::Vector]) -> Result<Self, Error> {
-        if points.len() < 3 {
-            return Err(Error::TooFewVertices);
-        }
+        // Fewer than 3 is the framing's verdict, shared with `from_array`.
         if points.len() > N {
             return Err(Error::OverCapacity);
         }

@@ -29,7 +29,7 @@ pub struct Frame<R> {
 macro_rules! polygon_frame {
     ($module:ident, $R:ty) => {
         pub(crate) mod $module {
-            use super::Frame;
+            use super::{ConstChecks, Frame};
             use crate::real::{Real, V2};
             use crate::Error;
 
@@ -70,7 +70,18 @@ macro_rules! polygon_frame {
                 Ok(Frame { reference, center, bounding_radius_squared: r2 })
             }
 
-            /// As `check_point` in `transform.rs`.
+            impl ConstChecks for $R {
+                #[inline(always)]
+                fn check_point(p: V2<$R>) -> Result<(), Error> {
+                    check_point(p)
+                }
+                #[inline]
+                fn frame_polygon(vertices: &mut [V2<$R>]) -> Result<Frame<$R>, Error> {
+                    frame(vertices)
+                }
+            }
+
+            /// Finite, and within [`Real::MAX_COORDINATE`].
             const fn check_point(p: V2<$R>) -> Result<(), Error> {
                 if !(p.x.is_finite() && p.y.is_finite()) {
                     Err(Error::NonFinite)
@@ -313,22 +324,10 @@ macro_rules! polygon_frame {
 polygon_frame!(single, f32);
 polygon_frame!(double, f64);
 
-/// The framing for a scalar type: how [`Real`](crate::Real) reaches the
-/// per-type functions above from generic code.
-pub trait FramePolygon: Sized {
+/// The per-type `const fn`s above, as generic code reaches them (through
+/// [`Real`](crate::Real)'s sealed supertrait): one definition of a valid
+/// point and of a polygon's framing, at compile time and at run time.
+pub trait ConstChecks: Sized {
+    fn check_point(p: V2<Self>) -> Result<(), Error>;
     fn frame_polygon(vertices: &mut [V2<Self>]) -> Result<Frame<Self>, Error>;
-}
-
-impl FramePolygon for f32 {
-    #[inline]
-    fn frame_polygon(vertices: &mut [V2<f32>]) -> Result<Frame<f32>, Error> {
-        single::frame(vertices)
-    }
-}
-
-impl FramePolygon for f64 {
-    #[inline]
-    fn frame_polygon(vertices: &mut [V2<f64>]) -> Result<Frame<f64>, Error> {
-        double::frame(vertices)
-    }
 }
