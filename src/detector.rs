@@ -7,7 +7,7 @@
 
 use crate::config::GjkConfig;
 use crate::epa::{Epa, PenetrationSolver};
-use crate::gjk::{core_distance, intersect, CoreProximity, CoreSeparation, Enclosing};
+use crate::gjk::{core_distance, first_simplex, intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
@@ -65,11 +65,9 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
-        match core_distance::<_, _, _, Witness<R>>(
-            &pair,
-            self.config.max_distance_iterations(),
-            self.config.distance_epsilon(),
-        ) {
+        let mut simplex = first_simplex::<_, _, _, Witness<R>>(&pair);
+        match core_distance(&pair, &mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon())
+        {
             CoreProximity::Overlapping(_) => None,
             CoreProximity::Separated(ref core) => separation(&pair, core),
         }
@@ -170,10 +168,10 @@ where
     // serves both queries, 1.1 KB less flash on the M4F. Elsewhere nothing:
     // a smaller simplex is a faster one.
     #[cfg(target_os = "none")]
-    let core = core_distance::<_, _, _, Witness<R>>(pair, max_iterations, epsilon);
+    let mut simplex = first_simplex::<_, _, _, Witness<R>>(pair);
     #[cfg(not(target_os = "none"))]
-    let core = core_distance::<_, _, _, ()>(pair, max_iterations, epsilon);
-    match core {
+    let mut simplex = first_simplex::<_, _, _, ()>(pair);
+    match core_distance(pair, &mut simplex, max_iterations, epsilon) {
         CoreProximity::Overlapping(enclosing) => Proximity::Overlapping(enclosing),
         CoreProximity::Separated(ref core) => Proximity::Resolved(rounded_overlap(pair, core)),
     }
@@ -184,7 +182,7 @@ where
 /// inlined on bare metal: its working values would widen the frame that
 /// holds GJK's result while GJK runs.
 #[cfg_attr(target_os = "none", inline(never))]
-fn rounded_overlap<R, A, B, P>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R, P>) -> Option<Penetration<R>>
+fn rounded_overlap<R, A, B, P>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<'_, R, P>) -> Option<Penetration<R>>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,
@@ -207,7 +205,7 @@ where
     })
 }
 
-fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<R, Witness<R>>) -> Option<Separation<R>>
+fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<'_, R, Witness<R>>) -> Option<Separation<R>>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,

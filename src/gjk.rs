@@ -10,7 +10,7 @@
 //! - no progress: `|v|` grew, so rounding has the last word;
 //! - the iteration limit, reported as such.
 
-use crate::minkowski::{MinkowskiVertex, Pair, SupportPoint, NO_ID};
+use crate::minkowski::{Pair, SupportPoint, NO_ID};
 use crate::real::{Real, V2};
 use crate::result::Status;
 use crate::shape::SupportMap;
@@ -19,11 +19,11 @@ use crate::simplex::{Closest, Payload, Simplex, Vertex};
 /// What GJK found out about the cores.
 /// `P` is what the simplex carries: [`Witness`] points when the caller
 /// wants closest points (distance), nothing when it does not (penetration).
-pub(crate) enum CoreProximity<R: Real, P> {
+pub(crate) enum CoreProximity<'s, R: Real, P> {
     /// The cores overlap or touch.
     Overlapping(Enclosing<R>),
     /// The cores are apart: closest point `v` of the Minkowski difference.
-    Separated(CoreSeparation<R, P>),
+    Separated(CoreSeparation<'s, R, P>),
 }
 
 /// A simplex whose points enclose (or touch) the origin: a penetration
@@ -41,8 +41,9 @@ impl<R: Real> Enclosing<R> {
     }
 }
 
-pub(crate) struct CoreSeparation<R: Real, P> {
-    pub simplex: Simplex<R, P>,
+pub(crate) struct CoreSeparation<'s, R: Real, P> {
+    /// The caller's simplex, reduced to the face closest to the origin.
+    pub simplex: &'s Simplex<R, P>,
     pub v: V2<R>,
     /// The largest certified lower bound of the core distance seen.
     pub lower_bound: R,
@@ -67,11 +68,17 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 }
 
 /// Distance between the cores (radii not included).
-pub(crate) fn core_distance<R, A, B, P>(
+///
+/// The simplex is the caller's, from [`first_simplex`], and is reduced in
+/// place: returned by value it was copied twice (into the result, and out of
+/// its start value), which linked `memcpy` into firmware that had no other
+/// use for it.
+pub(crate) fn core_distance<'s, R, A, B, P>(
     pair: &Pair<'_, R, A, B>,
+    simplex: &'s mut Simplex<R, P>,
     max_iterations: u32,
     epsilon: R,
-) -> CoreProximity<R, P>
+) -> CoreProximity<'s, R, P>
 where
     R: Real,
     P: Payload<R>,
@@ -83,7 +90,6 @@ where
     // How close the bounds must be for a repeat of a just-dropped vertex to
     // end the loop (see below): rounding, or the tolerance if larger.
     let repeat_gap = (R::from_u32(16) * R::EPSILON * scale).max(tolerance);
-    let mut simplex = start(&pair.support_shared(first_direction(pair.centers)));
     let mut lower_bound = R::ZERO;
     let mut previous = R::INFINITY;
     let mut iterations = 1;
@@ -98,7 +104,7 @@ where
             Closest::Enclosed => (V2::zero(), R::ZERO),
         };
         if vv == R::ZERO {
-            return overlapping(&simplex, iterations);
+            return overlapping(simplex, iterations);
         }
         // |v| grew: only rounding can do that, and the simplex is as close as
         // it gets (within rounding of the previous one). It still takes the
@@ -130,32 +136,35 @@ where
     }
 }
 
-/// The simplex of one support point. Not inlined on bare metal: the
-/// compiler builds the simplex in a temporary and copies it, and inlined,
-/// that temporary stays in the GJK loop's frame for the whole query (on the
-/// M4F in f32, 80 B more peak stack for distance, 96 B for penetration).
-#[cfg_attr(target_os = "none", inline(never))]
-fn start<R: Real, P: Payload<R>>(first: &MinkowskiVertex<R>) -> Simplex<R, P> {
-    Simplex::new(Vertex::from_minkowski(first))
+/// The simplex of the first support point, for [`core_distance`]. Inlined
+/// into the caller's frame, so it is built where it stays; an empty simplex
+/// to fill instead has its slots cleared (a call to `memclr`).
+#[inline(always)]
+pub(crate) fn first_simplex<R, A, B, P>(pair: &Pair<'_, R, A, B>) -> Simplex<R, P>
+where
+    R: Real,
+    P: Payload<R>,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    Simplex::new(Vertex::from_minkowski(&pair.support_shared(first_direction(pair.centers))))
 }
 
-fn overlapping<R: Real, P: Payload<R>>(simplex: &Simplex<R, P>, iterations: u32) -> CoreProximity<R, P> {
-    let mut points = [SupportPoint { point: R::vector(R::ZERO, R::ZERO), id: 0 }; 3];
-    let mut len = 0;
-    for (p, v) in points.iter_mut().zip(simplex.vertices()) {
-        *p = SupportPoint { point: v.w.to_glam(), id: v.id };
-        len += 1;
-    }
-    CoreProximity::Overlapping(Enclosing { points, len, iterations })
+fn overlapping<'s, R: Real, P: Payload<R>>(simplex: &Simplex<R, P>, iterations: u32) -> CoreProximity<'s, R, P> {
+    // Every slot, used or not, copied as it is: `len` says which count, and
+    // no slot is first cleared (a call to `memclr` on bare metal).
+    let (slots, len) = simplex.slots();
+    let point = |k: usize| SupportPoint { point: slots[k].w.to_glam(), id: slots[k].id };
+    CoreProximity::Overlapping(Enclosing { points: [point(0), point(1), point(2)], len, iterations })
 }
 
 fn separated<R: Real, P>(
-    simplex: Simplex<R, P>,
+    simplex: &Simplex<R, P>,
     v: V2<R>,
     lower_bound: R,
     iterations: u32,
     status: Status,
-) -> CoreProximity<R, P> {
+) -> CoreProximity<'_, R, P> {
     CoreProximity::Separated(CoreSeparation { simplex, v, lower_bound, iterations, status })
 }
 

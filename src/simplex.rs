@@ -80,13 +80,18 @@ pub(crate) enum Closest<R> {
 
 impl<R: Real, P: Payload<R>> Simplex<R, P> {
     pub fn new(first: Vertex<R, P>) -> Self {
-        Self { verts: [first; 3], len: 1 }
+        Self { verts: [first, first, first], len: 1 }
     }
 
     /// No vertex yet: for a loop whose one support call fills it.
     pub fn empty() -> Self {
         let none = Vertex { w: V2::zero(), id: NO_ID, payload: P::default() };
-        Self { verts: [none; 3], len: 0 }
+        Self { verts: [none, none, none], len: 0 }
+    }
+
+    /// All three slots and how many of them are vertices.
+    pub fn slots(&self) -> (&[Vertex<R, P>; 3], usize) {
+        (&self.verts, self.len)
     }
 
     pub fn vertices(&self) -> impl Iterator<Item = &Vertex<R, P>> {
