@@ -219,20 +219,30 @@ impl<R: Real> V2<R> {
     /// its largest component first, so no square under- or overflows: a
     /// subnormal vector normalises as well as a unit one, and an axis-aligned
     /// one gives exactly (0, +-1) or (+-1, 0).
-    ///
-    /// Not inlined on bare metal: called from a dozen places, it is 1.4 KB
-    /// of a firmware with every shape and query on the M4F (and 72 B more
-    /// in one with polygon distance alone).
-    #[cfg_attr(target_os = "none", inline(never))]
-    #[cfg_attr(not(target_os = "none"), inline)]
+    #[inline(always)]
     pub fn try_normalize(self) -> Option<Self> {
-        self.try_normalize_inlined()
+        self.try_length_and_unit().map(|(_, unit)| unit)
     }
     /// [`try_normalize`](Self::try_normalize) inlined everywhere: for EPA's
     /// edge normals, one per support point (5% of a penetration query's
     /// instructions on the M4F as a call).
     #[inline(always)]
     pub fn try_normalize_inlined(self) -> Option<Self> {
+        self.try_length_and_unit_inlined().map(|(_, unit)| unit)
+    }
+    /// The length and the unit vector, with the care of
+    /// [`try_normalize`](Self::try_normalize): one definition for both.
+    ///
+    /// Not inlined on bare metal: called from a dozen places, it is 1.4 KB
+    /// of a firmware with every shape and query on the M4F (and 72 B more
+    /// in one with polygon distance alone).
+    #[cfg_attr(target_os = "none", inline(never))]
+    #[cfg_attr(not(target_os = "none"), inline)]
+    pub fn try_length_and_unit(self) -> Option<(R, Self)> {
+        self.try_length_and_unit_inlined()
+    }
+    #[inline(always)]
+    fn try_length_and_unit_inlined(self) -> Option<(R, Self)> {
         let m = self.max_abs();
         if !(m > R::ZERO && m.is_finite()) {
             return None;
@@ -241,11 +251,11 @@ impl<R: Real> V2<R> {
         // (coordinates are bounded, so it cannot overflow either).
         if m >= R::EPSILON * R::EPSILON {
             let len = self.length();
-            return Some(V2::new(self.x / len, self.y / len));
+            return Some((len, V2::new(self.x / len, self.y / len)));
         }
         let u = V2::new(self.x / m, self.y / m);
         let len = u.length();
-        Some(V2::new(u.x / len, u.y / len))
+        Some((m * len, V2::new(u.x / len, u.y / len)))
     }
     #[inline(always)]
     pub fn is_finite(self) -> bool {

@@ -217,19 +217,7 @@ impl<R: Real, P> Simplex<R, P> {
                 return if outward { Some((signed, unit)) } else { Some((-signed, -unit)) };
             }
         }
-        let m = v.max_abs();
-        if !(m > R::ZERO && m.is_finite()) {
-            return None;
-        }
-        // sqrt(v . v) rounds least; below eps^2 its square would lose bits to
-        // underflow, and |v| is taken as m |v / m| (m its largest component).
-        if m >= R::EPSILON * R::EPSILON {
-            let len = v.length();
-            return Some((len, V2::new(v.x / len, v.y / len)));
-        }
-        let u = V2::new(v.x / m, v.y / m);
-        let len = u.length();
-        Some((m * len, V2::new(u.x / len, u.y / len)))
+        v.try_length_and_unit()
     }
 }
 
