@@ -120,13 +120,12 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     /// every payload ([`closest_face`]); only keeping the face is not.
     #[inline]
     pub fn solve(&mut self) -> Closest<R> {
-        let face = closest_face(&self.points(), self.len);
+        // The points by value, in registers: copied into an array in memory
+        // for a reference, they cost 56 B of flash in the firmware with the
+        // intersection test alone (and 48 B with every query).
+        let [p, q, r] = &self.verts;
+        let face = closest_face([p.w, q.w, r.w], self.len);
         self.keep(face)
-    }
-
-    #[inline(always)]
-    fn points(&self) -> [V2<R>; 3] {
-        [self.verts[0].w, self.verts[1].w, self.verts[2].w]
     }
 
     #[inline(always)]
@@ -184,12 +183,16 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
 
 impl<R: Real> Simplex<R, Witness<R>> {
     /// The closest point's pre-images on A and B (pair frame).
+    ///
+    /// After a reduction that found a closest point, the simplex has one
+    /// vertex or two (three enclose the origin).
     pub fn witness_points(&self) -> (V2<R>, V2<R>) {
-        let mut pa = V2::zero();
-        let mut pb = V2::zero();
-        for v in self.vertices() {
-            pa = pa + v.payload.a * v.payload.weight;
-            pb = pb + v.payload.b * v.payload.weight;
+        let [p, q, _] = &self.verts;
+        // Sums from zero: a -0 comes out +0.
+        let pa = V2::zero() + p.payload.a * p.payload.weight;
+        let pb = V2::zero() + p.payload.b * p.payload.weight;
+        if self.len == 2 {
+            return (pa + q.payload.a * q.payload.weight, pb + q.payload.b * q.payload.weight);
         }
         (pa, pb)
     }
@@ -251,10 +254,10 @@ struct Weights<R> {
 /// Hosts inline it everywhere for speed.
 #[cfg_attr(target_os = "none", inline)]
 #[cfg_attr(not(target_os = "none"), inline(always))]
-fn closest_face<R: Real>(w: &[V2<R>; 3], len: usize) -> Face<R> {
+fn closest_face<R: Real>(w: [V2<R>; 3], len: usize) -> Face<R> {
     let (edge, foot) = match len {
         2 => ((0, 1), segment_foot(w[0], w[1])),
-        3 => match closest_triangle_edge(w) {
+        3 => match closest_triangle_edge(w[0], w[1], w[2]) {
             Some(closest) => closest,
             None => return Face::Enclosed,
         },
@@ -275,8 +278,8 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// f64 on the M4F the intersection test peaked 0.24 KB deeper, past 1 KB).
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline(always))]
-fn closest_triangle_edge<R: Real>(w: &[V2<R>; 3]) -> Option<EdgeFoot<R>> {
-    let [wa, wb, wc] = *w;
+fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
+    let w = [wa, wb, wc];
     let area = (wb - wa).cross(wc - wa);
     // The origin is on the inner side of edge i->j when cross(wi, wj)
     // has the sign of the area (zero counts as inside: touching).
