@@ -80,7 +80,8 @@ pub(crate) enum Closest<R> {
 
 impl<R: Real, P: Payload<R>> Simplex<R, P> {
     pub fn new(first: Vertex<R, P>) -> Self {
-        Self { verts: [first, first, first], len: 1 }
+        let free = Vertex { id: NO_ID, ..first };
+        Self { verts: [first, free, free], len: 1 }
     }
 
     /// No vertex yet: for a loop whose one support call fills it.
@@ -98,11 +99,11 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         self.verts.iter().take(self.len)
     }
 
-    /// The ids of the vertices, [`NO_ID`] for empty slots: what the loops
-    /// compare new supports against.
+    /// The ids of the vertices, [`NO_ID`] for empty slots (which always
+    /// hold it): what the loops compare new supports against.
     pub fn ids(&self) -> [u32; 3] {
-        let id = |k: usize| if k < self.len { self.verts[k].id } else { NO_ID };
-        [id(0), id(1), id(2)]
+        let [p, q, r] = &self.verts;
+        [p.id, q.id, r.id]
     }
 
     /// Appends a vertex; a full simplex (which the loops never push to)
@@ -166,6 +167,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         // sum (coordinates near 1e-154 in f64).
         self.verts[0].payload.set_weight(first / sum);
         self.verts[1].payload.set_weight(second / sum);
+        self.verts[2].id = NO_ID;
         self.len = 2;
     }
 
@@ -177,6 +179,8 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
             _ => {}
         }
         self.verts[0].payload.set_weight(R::ONE);
+        self.verts[1].id = NO_ID;
+        self.verts[2].id = NO_ID;
         self.len = 1;
     }
 }
