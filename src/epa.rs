@@ -185,13 +185,20 @@ fn corner<R: Real>(s: &SupportPoint<R>) -> Corner<R> {
     Corner::new(V2::from_glam(s.point), s.id)
 }
 
+/// The support along `d` as a polytope corner. One copy on bare metal for
+/// the five places that take supports.
+#[cfg_attr(target_os = "none", inline(never))]
+fn support_corner<R: Real, M: MinkowskiDifference<R>>(difference: &M, d: V2<R>) -> Corner<R> {
+    corner(&difference.support(d.to_glam()))
+}
+
 pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     polytope: &mut S,
     config: &EpaConfig<R>,
     difference: &M,
     simplex: &[SupportPoint<R>],
 ) -> PenetrationEstimate<R> {
-    let support = |d: V2<R>| corner(&difference.support(d.to_glam()));
+    let support = |d: V2<R>| support_corner(difference, d);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
 
@@ -460,40 +467,23 @@ fn seed_from_edge<R: Real, S: Storage<R>>(
     let left = support(side);
     *iterations += 2;
     // Counter-clockwise: a, the right-hand support, b, the left-hand one.
-    // Supports that add no area (on the edge's line) are left out.
-    let mut k = 0;
-    for c in [a, right, b, left] {
-        if !polytope.items().iter().any(|p| p.w == c.w) {
-            polytope.insert_at(k, c);
-            k += 1;
-        }
+    // A support on the edge's line (no area: a repeat of `a` or `b`, or a
+    // flat difference) is left out.
+    let area_right = (b.w - a.w).cross(right.w - a.w);
+    let area_left = (b.w - a.w).cross(left.w - a.w);
+    polytope.insert_at(0, a);
+    if area_right < R::ZERO {
+        polytope.insert_at(1, right);
     }
-    match *polytope.items() {
-        [_, right, _, left] => {
-            // Drop a side support that lies on the edge's line (zero area side).
-            let area_right = (b.w - a.w).cross(right.w - a.w);
-            let area_left = (b.w - a.w).cross(left.w - a.w);
-            if area_left <= R::ZERO {
-                polytope.remove_at(3);
-            }
-            if area_right >= R::ZERO {
-                polytope.remove_at(1);
-            }
-        }
-        [p0, p1, p2] => {
-            let area = (p1.w - p0.w).cross(p2.w - p0.w);
-            if area == R::ZERO {
-                polytope.remove_at(2);
-            } else if area < R::ZERO {
-                if let [_, x, y] = polytope.items_mut() {
-                    core::mem::swap(x, y);
-                }
-            }
-        }
-        _ => {}
+    let k = polytope.items().len();
+    polytope.insert_at(k, b);
+    if area_left > R::ZERO {
+        polytope.insert_at(k + 1, left);
     }
 }
 
+/// Out of line on bare metal: four places build an estimate.
+#[cfg_attr(target_os = "none", inline(never))]
 fn estimate<R: Real>(
     outward: V2<R>,
     depth: R,
