@@ -185,9 +185,10 @@ fn corner<R: Real>(s: &SupportPoint<R>) -> Corner<R> {
     Corner::new(V2::from_glam(s.point), s.id)
 }
 
-/// The support along `d` as a polytope corner. One copy on bare metal for
-/// the five places that take supports.
-#[cfg_attr(target_os = "none", inline(never))]
+/// The support along `d` as a polytope corner. Inlined: out of line it
+/// saved 44 B of flash but put a frame of its own under EPA's, 64 B more
+/// peak stack for a penetration query in f32 on the M4F.
+#[inline(always)]
 fn support_corner<R: Real, M: MinkowskiDifference<R>>(difference: &M, d: V2<R>) -> Corner<R> {
     corner(&difference.support(d.to_glam()))
 }
