@@ -49,8 +49,8 @@ compile_error!("enable the f32 feature, the f64 feature, or both (the default)")
 use core::cell::UnsafeCell;
 use core::mem::MaybeUninit;
 use gjk2d::{
-    Capsule, Circle, Ellipse, Error, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle,
-    Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
+    Capsule, Circle, Ellipse, Error, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded, Segment,
+    Slice, Status, SupportMap, Transform, Triangle,
 };
 
 /// Most shapes a scene holds.
@@ -75,8 +75,7 @@ struct Global<T>(UnsafeCell<T>);
 // SAFETY: wasm32-unknown-unknown without threads: one thread touches these.
 unsafe impl<T> Sync for Global<T> {}
 
-static SCENE: Global<[f64; MAX_SHAPES * STRIDE]> =
-    Global(UnsafeCell::new([0.0; MAX_SHAPES * STRIDE]));
+static SCENE: Global<[f64; MAX_SHAPES * STRIDE]> = Global(UnsafeCell::new([0.0; MAX_SHAPES * STRIDE]));
 static OUT: Global<[f64; OUT_LEN]> = Global(UnsafeCell::new([0.0; OUT_LEN]));
 // Uninitialised bodies and `false` flags: the stores live in .bss and cost no
 // bytes of the module (an initialised store would be 6 KB of data).
@@ -129,10 +128,7 @@ struct Store<R: Real> {
 }
 
 impl<R: Real> Store<R> {
-    const EMPTY: Self = Self {
-        bodies: [const { MaybeUninit::uninit() }; MAX_SHAPES],
-        built: [false; MAX_SHAPES],
-    };
+    const EMPTY: Self = Self { bodies: [const { MaybeUninit::uninit() }; MAX_SHAPES], built: [false; MAX_SHAPES] };
 
     fn get(&self, i: u32) -> Option<(&dyn SupportMap<R>, &Transform<R>)> {
         let i = i as usize;
