@@ -93,7 +93,7 @@ impl<R: Real, P> Gjk<R, P> {
                 let estimate = self.solver.solve(&pair, enclosing.points());
                 Some(Penetration {
                     normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
-                    depth: estimate.depth + pair.radius,
+                    depth: estimate.depth + pair.radius(),
                     error_bound: estimate.error_bound,
                     iterations: enclosing.iterations + estimate.iterations,
                     status: estimate.status,
@@ -192,13 +192,13 @@ where
     let fallback = pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO));
     let (distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
     let error_bound = (distance - core.lower_bound).max(R::ZERO);
-    let certain = core.status.is_converged() || core.lower_bound > pair.radius;
-    if distance > pair.radius && certain {
+    let certain = core.status.is_converged() || core.lower_bound > pair.radius();
+    if distance > pair.radius() && certain {
         return None;
     }
     Some(Penetration {
         normal: pair.to_world_vector(normal),
-        depth: (pair.radius - distance).max(R::ZERO),
+        depth: (pair.radius() - distance).max(R::ZERO),
         error_bound,
         iterations: core.iterations,
         status: core.status,
@@ -213,13 +213,13 @@ where
 {
     let (core_distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers)?;
     // `core_distance` is an upper bound: within the radii, certainly touching.
-    if core_distance <= pair.radius {
+    if core_distance <= pair.radius() {
         return None;
     }
     let (a, b) = core.simplex.witness_points();
-    let (a, b) = (a + normal * pair.radius_a, b - normal * pair.radius_b);
+    let (a, b) = (a + normal * pair.radius_a(), b - normal * pair.radius_b());
     Some(Separation {
-        distance: (core_distance - pair.radius).max(R::ZERO),
+        distance: (core_distance - pair.radius()).max(R::ZERO),
         normal: pair.to_world_vector(normal),
         point_a: pair.to_world_point(a),
         point_b: pair.to_world_point(b),

@@ -51,16 +51,6 @@ pub(crate) struct CoreSeparation<'s, R: Real, P> {
     pub status: Status,
 }
 
-fn first_direction<R: Real>(centers: V2<R>) -> V2<R> {
-    // Towards the origin from B's center minus A's: the point of B - A most
-    // likely closest to the origin.
-    if centers.length_squared() > R::ZERO {
-        -centers
-    } else {
-        V2::new(R::ONE, R::ZERO)
-    }
-}
-
 /// Whether `id` is a vertex (not a curve point) among `ids`.
 #[inline(always)]
 fn repeats(ids: &[u32; 3], id: u32) -> bool {
@@ -147,7 +137,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    Simplex::new(Vertex::from_minkowski(&pair.support_shared(first_direction(pair.centers))))
+    Simplex::new(Vertex::from_minkowski(&pair.support_shared(pair.first_direction)))
 }
 
 fn overlapping<'s, R: Real, P: Payload<R>>(simplex: &Simplex<R, P>, iterations: u32) -> CoreProximity<'s, R, P> {
@@ -185,10 +175,10 @@ where
     // How far apart the cores may be and still count as intersecting,
     // squared: from the squared size when the shapes are sharp (polygons),
     // so the test takes no square root at all.
-    let reach2 = if pair.radius == R::ZERO {
+    let reach2 = if pair.radius() == R::ZERO {
         detect_epsilon * detect_epsilon * pair.scale_squared()
     } else {
-        let reach = pair.radius + detect_epsilon * pair.scale();
+        let reach = pair.radius() + detect_epsilon * pair.scale();
         reach * reach
     };
     // The gap tolerance, for curved cores only (computed on first use).
@@ -197,7 +187,7 @@ where
     // a second inlined copy of it for the start cost 48 B of flash in a
     // firmware with the intersection test alone.
     let mut simplex: Simplex<R, ()> = Simplex::empty();
-    let mut direction = first_direction(pair.centers);
+    let mut direction = pair.first_direction;
     let (mut v, mut vv) = (V2::zero(), R::ZERO);
     let mut before = [NO_ID; 3];
     let mut previous = R::INFINITY;

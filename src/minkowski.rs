@@ -60,12 +60,11 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     rotated: bool,
     /// B's reference point in A's reference frame.
     offset: V2<R>,
-    /// Sum of both radii: the cores are compared, the radii added after.
-    pub radius: R,
-    pub radius_a: R,
-    pub radius_b: R,
-    /// B's center minus A's center: GJK's first search direction.
+    /// B's center minus A's center: orients a normal the simplex cannot.
     pub centers: V2<R>,
+    /// GJK's first search direction, from A's center towards B's, chosen
+    /// here once: in each GJK loop the choice was an inlined copy.
+    pub first_direction: V2<R>,
     /// A's placement, for answers in world coordinates.
     frame: &'s Transform<R>,
     reference_a: V2<R>,
@@ -83,7 +82,6 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         } else {
             (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos, true)
         };
-        let (radius_a, radius_b) = (a.radius(), b.radius());
         let mut pair = Self {
             a,
             b,
@@ -91,10 +89,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             sin,
             rotated,
             offset: V2::zero(),
-            radius_a,
-            radius_b,
-            radius: radius_a + radius_b,
             centers: V2::zero(),
+            first_direction: V2::zero(),
             frame: ta,
             reference_a,
             hint_a: Cell::new(NO_ID),
@@ -106,7 +102,28 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let translations = ta.inverse_rotate(tb.translation - ta.translation);
         pair.offset = translations + references;
         pair.centers = pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
+        // Towards the origin from B's center minus A's: the point of B - A
+        // most likely closest to the origin.
+        pair.first_direction =
+            if pair.centers.length_squared() > R::ZERO { -pair.centers } else { V2::new(R::ONE, R::ZERO) };
         pair
+    }
+
+    /// Sum of both radii: the cores are compared, the radii added after.
+    /// Asked of the shapes where needed rather than stored: a polygon's
+    /// radius is then a constant zero, and the code for rounded shapes
+    /// (square roots, closed forms) drops out of a firmware with polygons.
+    #[inline(always)]
+    pub fn radius(&self) -> R {
+        self.a.radius() + self.b.radius()
+    }
+    #[inline(always)]
+    pub fn radius_a(&self) -> R {
+        self.a.radius()
+    }
+    #[inline(always)]
+    pub fn radius_b(&self) -> R {
+        self.b.radius()
     }
 
     /// The pair's size: the larger bounding radius. Asked for where it is
