@@ -198,44 +198,24 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
 
-    // A counter-clockwise polygon around the origin from GJK's simplex. A
-    // simplex that only touches the origin (a point or an edge) is widened
-    // with supports along its normals.
+    // GJK's simplex, counter-clockwise, is the polytope to expand. One that
+    // only touches the origin (a point, or an edge through it) has no
+    // interior yet: the loop below widens it with supports along its edges'
+    // normals, as it widens any polytope, so the seed takes no support of
+    // its own (each inlined support call costs flash on a microcontroller).
+    // A point that repeats one already in is left out: an edge needs two.
     polytope.clear_all();
-    // One call of `seed_from_edge`, so it is inlined and its working values
-    // share this frame's slots (the peak stack on a microcontroller).
-    let edge_seed = match simplex {
-        [a, b, c] => {
-            let (a, b, c) = (corner(a), corner(b), corner(c));
-            let ccw = (b.w - a.w).cross(c.w - a.w) >= R::ZERO;
-            let order = if ccw { [a, b, c] } else { [a, c, b] };
-            for (i, c) in order.into_iter().enumerate() {
-                polytope.insert_at(i, c);
-            }
-            None
-        }
-        [a, b] => Some((corner(a), corner(b))),
-        [a] => {
-            let a = corner(a);
-            let b = support(V2::new(R::ONE, R::ZERO));
-            let b = if b.w == a.w { support(V2::new(-R::ONE, R::ZERO)) } else { b };
-            iterations += 1;
-            Some((a, b))
-        }
-        _ => None,
+    let ccw = match simplex {
+        [a, b, c] => (corner(b).w - corner(a).w).cross(corner(c).w - corner(a).w) >= R::ZERO,
+        _ => true,
     };
-    if let Some((a, b)) = edge_seed {
-        seed_from_edge(polytope, a, b, &support, &mut iterations);
-    }
-    if polytope.items().len() < 3 {
-        // The Minkowski difference is flat (e.g. parallel segments): it has
-        // no interior, the depth is zero along the normal of its line.
-        let normal = match polytope.items() {
-            [a, b, ..] => (b.w - a.w).perp().try_normalize(),
-            _ => None,
+    for k in 0..simplex.len() {
+        // Clockwise triangles are read backwards from their first point.
+        let Some(s) = simplex.get(if ccw || k == 0 { k } else { 3 - k }) else { continue };
+        let c = corner(s);
+        if polytope.items().iter().all(|p| p.w != c.w) {
+            polytope.insert_at(polytope.items().len(), c);
         }
-        .unwrap_or(V2::new(R::ONE, R::ZERO));
-        return estimate(normal, R::ZERO, R::ZERO, iterations, Status::Converged);
     }
     let n = polytope.items().len();
     for i in 0..n {
@@ -447,35 +427,6 @@ fn prune<R: Real, S: Storage<R>>(polytope: &mut S, closest: usize, upper: R) -> 
         c.set_edge_distance(chord);
     }
     true
-}
-
-/// A triangle or quadrilateral around the origin from an edge `a`-`b` that
-/// holds it, with the supports on both sides of the edge.
-fn seed_from_edge<R: Real, S: Storage<R>>(
-    polytope: &mut S,
-    a: Corner<R>,
-    b: Corner<R>,
-    support: &impl Fn(V2<R>) -> Corner<R>,
-    iterations: &mut u32,
-) {
-    let side = (b.w - a.w).perp();
-    let right = support(-side);
-    let left = support(side);
-    *iterations += 2;
-    // Counter-clockwise: a, the right-hand support, b, the left-hand one.
-    // A support on the edge's line (no area: a repeat of `a` or `b`, or a
-    // flat difference) is left out.
-    let area_right = (b.w - a.w).cross(right.w - a.w);
-    let area_left = (b.w - a.w).cross(left.w - a.w);
-    polytope.insert_at(0, a);
-    if area_right < R::ZERO {
-        polytope.insert_at(1, right);
-    }
-    let k = polytope.items().len();
-    polytope.insert_at(k, b);
-    if area_left > R::ZERO {
-        polytope.insert_at(k + 1, left);
-    }
 }
 
 fn estimate<R: Real>(
