@@ -7,13 +7,13 @@
 
 use crate::config::GjkConfig;
 use crate::epa::{Epa, PenetrationSolver};
-use crate::gjk::{core_distance, first_simplex, intersect, CoreProximity, CoreSeparation, Enclosing};
+use crate::gjk::{core_distance, intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation};
 use crate::shape::SupportMap;
-use crate::simplex::Witness;
+use crate::simplex::{Simplex, Witness};
 use crate::transform::Transform;
 
 /// The narrow-phase detector: configuration plus a penetration solver (EPA
@@ -65,7 +65,7 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
-        let mut simplex = first_simplex::<_, _, _, Witness<R>>(&pair);
+        let mut simplex = None::<Simplex<R, Witness<R>>>;
         match core_distance(&pair, &mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon())
         {
             CoreProximity::Overlapping(_) => None,
@@ -168,9 +168,9 @@ where
     // serves both queries, 1.1 KB less flash on the M4F. Elsewhere nothing:
     // a smaller simplex is a faster one.
     #[cfg(target_os = "none")]
-    let mut simplex = first_simplex::<_, _, _, Witness<R>>(pair);
+    let mut simplex = None::<Simplex<R, Witness<R>>>;
     #[cfg(not(target_os = "none"))]
-    let mut simplex = first_simplex::<_, _, _, ()>(pair);
+    let mut simplex = None::<Simplex<R, ()>>;
     match core_distance(pair, &mut simplex, max_iterations, epsilon) {
         CoreProximity::Overlapping(enclosing) => Proximity::Overlapping(enclosing),
         CoreProximity::Separated(ref core) => Proximity::Resolved(rounded_overlap(pair, core)),

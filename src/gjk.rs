@@ -59,13 +59,15 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 
 /// Distance between the cores (radii not included).
 ///
-/// The simplex is the caller's, from [`first_simplex`], and is reduced in
-/// place: returned by value it was copied twice (into the result, and out of
-/// its start value), which linked `memcpy` into firmware that had no other
-/// use for it.
+/// The simplex lives in the caller's `slot` (pass `None`), started here and
+/// reduced in place: returned by value it was copied twice (into the result,
+/// and out of its start value), which linked `memcpy` into firmware that had
+/// no other use for it. Started here rather than by the caller, a firmware
+/// with both the distance and the penetration query has one copy of the
+/// start (0.11 KB less on the M4F).
 pub(crate) fn core_distance<'s, R, A, B, P>(
     pair: &Pair<'_, R, A, B>,
-    simplex: &'s mut Simplex<R, P>,
+    slot: &'s mut Option<Simplex<R, P>>,
     max_iterations: u32,
     epsilon: R,
 ) -> CoreProximity<'s, R, P>
@@ -75,6 +77,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
+    let simplex = slot.insert(first_simplex(pair));
     let scale = pair.scale();
     let tolerance = epsilon * scale;
     // How close the bounds must be for a repeat of a just-dropped vertex to
@@ -126,11 +129,11 @@ where
     }
 }
 
-/// The simplex of the first support point, for [`core_distance`]. Inlined
-/// into the caller's frame, so it is built where it stays; an empty simplex
-/// to fill instead has its slots cleared (a call to `memclr`).
+/// The simplex of the first support point, for [`core_distance`]. Inlined,
+/// so it is built where it stays; an empty simplex to fill instead has its
+/// slots cleared (a call to `memclr`).
 #[inline(always)]
-pub(crate) fn first_simplex<R, A, B, P>(pair: &Pair<'_, R, A, B>) -> Simplex<R, P>
+fn first_simplex<R, A, B, P>(pair: &Pair<'_, R, A, B>) -> Simplex<R, P>
 where
     R: Real,
     P: Payload<R>,
