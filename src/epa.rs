@@ -34,7 +34,19 @@ pub trait PenetrationSolver<R: Real> {
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
-/// the stack (default 32: 384 bytes in f32, 768 in f64).
+/// the stack (default 32: 384 bytes in f32, 768 in f64). A full polytope
+/// drops corners that can no longer matter; when none qualifies the answer
+/// says `Status::CapacityLimit`.
+///
+/// `N` is at least 3 (a triangle around the origin), checked when the
+/// program is compiled:
+///
+/// ```compile_fail
+/// use gjk2d::{Circle, Epa, Gjk, GjkConfig, Transform};
+/// let gjk = Gjk::with_solver(GjkConfig::default(), Epa::<f32, 2>::default());
+/// let circle = Circle::new(1.0f32).unwrap();
+/// let _ = gjk.penetration(&circle, &Transform::IDENTITY, &circle, &Transform::IDENTITY);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Epa<R: Real, const N: usize = 32> {
     pub config: EpaConfig<R>,
@@ -52,6 +64,9 @@ impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
     // penetration query on a microcontroller).
     #[inline(never)]
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
+        // Checked when the program is compiled: a polytope with no room for
+        // a triangle could not hold the origin inside.
+        const { assert!(N >= 3, "Epa<R, N>: N must be at least 3") };
         let mut polytope = heapless::Vec::<Corner<R>, N>::new();
         expand(&mut polytope, &self.config, difference, simplex)
     }
@@ -98,7 +113,6 @@ pub(crate) trait Storage<R> {
     fn items_mut(&mut self) -> &mut [Corner<R>];
     /// Inserts at `index`; false when full.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool;
-    fn remove_at(&mut self, index: usize);
     fn clear_all(&mut self);
 }
 
@@ -109,39 +123,31 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     fn items_mut(&mut self) -> &mut [Corner<R>] {
         self
     }
-    // Shifted by swaps of neighbours, not `Vec::insert`/`remove`: a shift
-    // between overlapping slots is a `memmove` call, and on a microcontroller
-    // that links 1.5 KB of flash nothing else here needs. A polytope has a few
+    // Shifted by swaps of neighbours, not `Vec::insert`: a shift between
+    // overlapping slots is a `memmove` call, and on a microcontroller that
+    // links 1.5 KB of flash nothing else here needs. A polytope has a few
     // dozen corners at most; the swaps cost no more than the shift.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
         if index > self.len() || self.push(c).is_err() {
             return false;
         }
-        let items: &mut [Corner<R>] = self;
-        for k in (index..items.len().saturating_sub(1)).rev() {
-            swap_with_next(items, k);
-        }
+        let last = self.len() - 1;
+        move_item(self, last, index);
         true
-    }
-    fn remove_at(&mut self, index: usize) {
-        let items: &mut [Corner<R>] = self;
-        for k in index..items.len().saturating_sub(1) {
-            swap_with_next(items, k);
-        }
-        if index < self.len() {
-            self.pop();
-        }
     }
     fn clear_all(&mut self) {
         self.clear()
     }
 }
 
-/// Swaps items `k` and `k + 1` (nothing out of range: no panic path).
-#[inline(always)]
-fn swap_with_next<T>(items: &mut [T], k: usize) {
-    if let Some([a, b]) = items.get_mut(k..k.saturating_add(2)) {
+/// Moves item `from` to index `to`, the items between shifting by one to
+/// make room: swaps of neighbours (nothing out of range, no panic path).
+fn move_item<T>(items: &mut [T], mut from: usize, to: usize) {
+    while from != to {
+        let first = if from < to { from } else { from - 1 };
+        let Some([a, b]) = items.get_mut(first..first + 2) else { return };
         core::mem::swap(a, b);
+        from = if from < to { from + 1 } else { first };
     }
 }
 
@@ -159,11 +165,6 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
         }
         self.insert(index, c);
         true
-    }
-    fn remove_at(&mut self, index: usize) {
-        if index < self.len() {
-            self.remove(index);
-        }
     }
     fn clear_all(&mut self) {
         self.clear()
@@ -209,10 +210,10 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         [a, b, c] => (corner(b).w - corner(a).w).cross(corner(c).w - corner(a).w) >= R::ZERO,
         _ => true,
     };
-    for k in 0..simplex.len() {
+    // No simplex at all (a solver called by hand) is taken as the origin.
+    for k in 0..simplex.len().max(1) {
         // Clockwise triangles are read backwards from their first point.
-        let Some(s) = simplex.get(if ccw || k == 0 { k } else { 3 - k }) else { continue };
-        let c = corner(s);
+        let c = simplex.get(if ccw || k == 0 { k } else { 3 - k }).map_or(Corner::new(V2::zero(), NO_ID), corner);
         if polytope.items().iter().all(|p| p.w != c.w) {
             polytope.insert_at(polytope.items().len(), c);
         }
@@ -232,15 +233,15 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     let (closest, lower, status) = loop {
         let items = polytope.items();
         let n = items.len();
-        let (mut i, mut lower) = (0, cyclic(items, 0).edge_distance());
-        for (k, c) in items.iter().enumerate().skip(1) {
+        let (mut i, mut lower) = (0, R::INFINITY);
+        for (k, c) in items.iter().enumerate() {
             if c.edge_distance() < lower {
                 i = k;
                 lower = c.edge_distance();
             }
         }
         let j = if i + 1 >= n { 0 } else { i + 1 };
-        let (p, q) = (cyclic(items, i), cyclic(items, j));
+        let (p, q) = (items.get(i).copied().unwrap_or_default(), items.get(j).copied().unwrap_or_default());
         let (_, normal) = edge(p.w, q.w);
         if iterations >= config.max_iterations() {
             break (i, lower, Status::IterationLimit);
@@ -264,15 +265,29 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         }
         let mut new = w;
         new.set_edge_distance(edge(w.w, q.w).0);
-        if !polytope.insert_at(j.max(i + 1), new) {
-            // Full: make room where the polytope no longer matters, then
-            // look again (the support is recomputed, the bounds stand).
-            if !prune(polytope, i, upper) {
+        let at = j.max(i + 1);
+        // Where the edge's start `p` is once `new` is in.
+        let start = if polytope.insert_at(at, new) {
+            i
+        } else {
+            // Full: `new` takes the place of a corner that no longer matters,
+            // moved to where it belongs (the corners between shift by one).
+            let items = polytope.items_mut();
+            let Some(k) = prune(items, i, upper) else {
                 break (i, lower, Status::CapacityLimit);
+            };
+            if let Some(slot) = items.get_mut(k) {
+                *slot = new;
             }
-            continue;
-        }
-        if let Some(c) = polytope.items_mut().get_mut(i) {
+            if k < i {
+                move_item(items, k, i);
+                i - 1
+            } else {
+                move_item(items, k, at);
+                i
+            }
+        };
+        if let Some(c) = polytope.items_mut().get_mut(start) {
             c.set_edge_distance(edge(p.w, w.w).0);
         }
     };
@@ -399,34 +414,33 @@ fn finish_curved<R: Real, S: Storage<R>>(
     estimate(u, depth, (depth - lower).max(R::ZERO), iterations, Status::Converged)
 }
 
-/// Removes one vertex whose two edges, merged into one chord, stay at least
-/// `upper` from the origin: the chord can never become the closest edge before
-/// EPA converges, and the polytope stays convex and around the origin. The
-/// closest edge (starting at `closest`) is kept. False when no vertex qualifies.
-fn prune<R: Real, S: Storage<R>>(polytope: &mut S, closest: usize, upper: R) -> bool {
-    let n = polytope.items().len();
-    let mut farthest: Option<(usize, R)> = None;
+/// The corner to drop from a full polytope: one whose two edges, merged
+/// into one chord, stay at least `upper` from the origin (the farthest such
+/// chord), so the chord can never become the closest edge before EPA
+/// converges and the polytope stays convex and around the origin. The ends
+/// of the closest edge (starting at `closest`) are kept. The corner before
+/// the dropped one starts the chord and gets its distance. `None` when no
+/// corner qualifies.
+fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R) -> Option<usize> {
+    let n = items.len();
+    let mut farthest: Option<(usize, usize, R)> = None;
+    // Neighbour indices walked along, not computed modulo `n` (a division).
+    let mut before = n.wrapping_sub(1);
     for k in 0..n {
-        if k == closest || k == (closest + 1) % n.max(1) {
-            continue;
+        let after = if k + 1 == n { 0 } else { k + 1 };
+        if let (false, Some(prev), Some(next)) =
+            (k == closest || before == closest, items.get(before), items.get(after))
+        {
+            let chord = edge(prev.w, next.w).0;
+            if chord >= upper && farthest.is_none_or(|(_, _, d)| chord > d) {
+                farthest = Some((k, before, chord));
+            }
         }
-        let items = polytope.items();
-        let (prev, next) = (cyclic(items, k + n - 1).w, cyclic(items, k + 1).w);
-        let chord = edge(prev, next).0;
-        if chord >= upper && farthest.is_none_or(|(_, d)| chord > d) {
-            farthest = Some((k, chord));
-        }
+        before = k;
     }
-    let Some((k, chord)) = farthest else {
-        return false;
-    };
-    polytope.remove_at(k);
-    let n = n - 1;
-    let before = (k + n - 1) % n.max(1);
-    if let Some(c) = polytope.items_mut().get_mut(before) {
-        c.set_edge_distance(chord);
-    }
-    true
+    let (k, before, chord) = farthest?;
+    items.get_mut(before)?.set_edge_distance(chord);
+    Some(k)
 }
 
 fn estimate<R: Real>(
