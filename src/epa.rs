@@ -176,7 +176,7 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
 fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
     // Componentwise normalisation (try_normalize): exact unit normals for
     // axis-aligned edges, and no under- or overflow for tiny or huge ones.
-    match (q - p).perp_cw().try_normalize_inlined() {
+    match (q - p).perp_cw().try_normalize() {
         Some(unit) => (p.dot(unit).max(R::ZERO), unit),
         None => (R::ZERO, p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))),
     }
