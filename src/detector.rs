@@ -189,8 +189,10 @@ where
     B: SupportMap<R> + ?Sized,
 {
     // A closest point too small to give a direction is touching.
-    let fallback = pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO));
-    let (distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers).unwrap_or((R::ZERO, fallback));
+    let (distance, normal) = core
+        .simplex
+        .distance_and_normal(core.v, pair.centers)
+        .unwrap_or_else(|| (R::ZERO, pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))));
     let error_bound = (distance - core.lower_bound).max(R::ZERO);
     let certain = core.status.is_converged() || core.lower_bound > pair.radius();
     if distance > pair.radius() && certain {
@@ -217,7 +219,11 @@ where
         return None;
     }
     let (a, b) = core.simplex.witness_points();
-    let (a, b) = (a + normal * pair.radius_a(), b - normal * pair.radius_b());
+    // Only where there is a radius: for polygons the compiler then sees
+    // there is nothing to add (`p + n * 0.0` is not `p` to it).
+    let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
+    let a = if radius_a > R::ZERO { a + normal * radius_a } else { a };
+    let b = if radius_b > R::ZERO { b - normal * radius_b } else { b };
     Some(Separation {
         distance: (core_distance - pair.radius()).max(R::ZERO),
         normal: pair.to_world_vector(normal),
