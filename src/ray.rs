@@ -236,7 +236,8 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     let mut normal = V2::zero();
     let mut v = x - V2::from_glam(shape.center());
     // Shape points (not x - p), since x moves as the ray advances.
-    let mut points: [V2<R>; 3] = [V2::zero(); 3];
+    // Unused slots start as the origin: a zeroed array is a call to `memclr`.
+    let mut points: [V2<R>; 3] = [o, o, o];
     let mut len = 0usize;
     let mut iterations = 0;
     let status = loop {

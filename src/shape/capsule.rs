@@ -14,7 +14,8 @@ pub struct Capsule<R: Real> {
 impl<R: Real> Capsule<R> {
     /// The segment `a`-`b` (distinct points) swept by `radius` (> 0).
     pub fn new(a: R::Vector, b: R::Vector, radius: R) -> Result<Self, Error> {
-        Ok(Self { core: Segment::new(a, b)?, radius: check_length(radius)? })
+        let radius = check_length(radius)?;
+        Segment::new(a, b).map(|core| Self { core, radius })
     }
 
     /// dyn4j's constructor: a capsule `width` by `height` centered on the
