@@ -145,28 +145,29 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     }
 
     /// Keeps edge `verts[i]`-`verts[j]` in slots 0 and 1, with the closest
-    /// point's weights `first / sum` and `second / sum`.
+    /// point's weights `first / sum` (for `i`) and `second / sum` (for `j`).
     #[inline(always)]
     fn keep_edge(&mut self, (i, j): (usize, usize), Weights { first, second, sum }: Weights<R>) {
-        // Constant indices only: a copy between slots the compiler cannot
-        // tell apart becomes a call to `memmove`, 1.5 KB of flash in a
-        // firmware that needs nothing else of it.
-        match (i, j) {
+        // The vertex left out gets the third's place: one copy, from a
+        // constant slot (a copy between slots the compiler cannot tell apart
+        // becomes a call to `memmove`, 1.5 KB of flash in a firmware that
+        // needs nothing else of it). The edge may come out reversed, which
+        // nothing downstream minds.
+        let (slot_0, slot_1) = match (i, j) {
             (1, 2) => {
-                self.verts[0] = self.verts[1];
-                self.verts[1] = self.verts[2];
+                self.verts[0] = self.verts[2];
+                (second, first)
             }
             (2, 0) => {
-                let first_vertex = self.verts[0];
-                self.verts[0] = self.verts[2];
-                self.verts[1] = first_vertex;
+                self.verts[1] = self.verts[2];
+                (second, first)
             }
-            _ => {}
-        }
+            _ => (first, second),
+        };
         // Divided, not multiplied by 1/sum: 1/sum overflows for a subnormal
         // sum (coordinates near 1e-154 in f64).
-        self.verts[0].payload.set_weight(first / sum);
-        self.verts[1].payload.set_weight(second / sum);
+        self.verts[0].payload.set_weight(slot_0 / sum);
+        self.verts[1].payload.set_weight(slot_1 / sum);
         self.verts[2].id = NO_ID;
         self.len = 2;
     }
