@@ -121,8 +121,10 @@ where
         // rounding can make it happen with the bounds still apart (a core
         // nearly parallel to a face): then the bounds must agree to rounding,
         // or the loop goes on (the stall guard and the limit still bound it).
-        let dropped_repeat = repeats(&before, w.id) && length - lower_bound <= repeat_gap;
-        if stalled || repeats(&simplex.ids(), w.id) || dropped_repeat || gap_closed {
+        // (The reduction only drops vertices: a repeat of one still in the
+        // simplex is a repeat of one before it too.)
+        let repeat = repeats(&before, w.id) && (length - lower_bound <= repeat_gap || simplex.ids().contains(&w.id));
+        if stalled || repeat || gap_closed {
             return separated(simplex, v, lower_bound, iterations, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));

@@ -126,7 +126,9 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// The pair's size: the larger bounding radius. Asked for where it is
     /// needed, not up front: the polygon overlap test never needs it, and then
-    /// links no square root.
+    /// links no square root. One out-of-line copy on bare metal, where GJK
+    /// and EPA each ask for it.
+    #[cfg_attr(target_os = "none", inline(never))]
     pub fn scale(&self) -> R {
         self.a.bounding_radius().max(self.b.bounding_radius())
     }
