@@ -54,9 +54,10 @@ pub trait MinkowskiDifference<R: Real> {
 pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     a: &'s A,
     b: &'s B,
-    /// Rotation of B's frame in A's frame: exactly (1, 0) when both turn alike.
+    /// Rotation of B's frame in A's frame, skipped when it is the identity.
     cos: R,
     sin: R,
+    rotated: bool,
     /// B's reference point in A's reference frame.
     offset: V2<R>,
     /// B's center minus A's center: orients a normal the simplex cannot.
@@ -76,16 +77,17 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn new(a: &'s A, ta: &'s Transform<R>, b: &'s B, tb: &Transform<R>) -> Self {
         let reference_a = V2::from_glam(a.reference_point());
         let reference_b = V2::from_glam(b.reference_point());
-        let (cos, sin) = if ta.cos == tb.cos && ta.sin == tb.sin {
-            (R::ONE, R::ZERO)
+        let (cos, sin, rotated) = if ta.cos == tb.cos && ta.sin == tb.sin {
+            (R::ONE, R::ZERO, false)
         } else {
-            (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos)
+            (ta.cos * tb.cos + ta.sin * tb.sin, ta.cos * tb.sin - ta.sin * tb.cos, true)
         };
         let mut pair = Self {
             a,
             b,
             cos,
             sin,
+            rotated,
             offset: V2::zero(),
             centers: V2::zero(),
             first_direction: V2::zero(),
@@ -148,13 +150,15 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
         self.turn(v, -self.sin)
     }
-    /// `v` rotated by (`cos`, `sin`). Always multiplied out: the identity
-    /// (1, 0) gives `v` back exactly (up to the sign of a zero), and a
-    /// branch to skip it cost flash in every inlined support (88 B in a
-    /// firmware with polygon penetration on the M4F).
+    /// `v` rotated by (`cos`, `sin`), or left as it is when the shapes are
+    /// not rotated relative to each other.
     #[inline(always)]
     fn turn(&self, v: V2<R>, sin: R) -> V2<R> {
-        V2::new(self.cos * v.x - sin * v.y, sin * v.x + self.cos * v.y)
+        if self.rotated {
+            V2::new(self.cos * v.x - sin * v.y, sin * v.x + self.cos * v.y)
+        } else {
+            v
+        }
     }
 
     /// [`support`](Self::support) for the queries that ask for supports in
