@@ -86,9 +86,11 @@ pub(crate) struct Corner<R> {
 }
 
 impl<R: Real> Corner<R> {
-    /// A support point, its edge distance not known yet (zero).
-    fn new(w: V2<R>, id: u32) -> Self {
-        Self { w, signed_distance: if id == NO_ID { -R::ZERO } else { R::ZERO } }
+    /// A support point, its edge distance not known yet (zero). `curved`
+    /// is false where both cores are polytopes: the flag is then never set
+    /// and never read, and the compiler drops its code (nothing polishes).
+    fn new(w: V2<R>, id: u32, curved: bool) -> Self {
+        Self { w, signed_distance: if curved && id == NO_ID { -R::ZERO } else { R::ZERO } }
     }
     #[inline(always)]
     fn edge_distance(&self) -> R {
@@ -99,10 +101,10 @@ impl<R: Real> Corner<R> {
         self.signed_distance.is_sign_negative()
     }
     #[inline(always)]
-    fn set_edge_distance(&mut self, d: R) {
+    fn set_edge_distance(&mut self, d: R, curved: bool) {
         // A distance that rounded to -0.0 must not flip the flag.
         let d = d.abs();
-        self.signed_distance = if self.on_curve() { -d } else { d };
+        self.signed_distance = if curved && self.on_curve() { -d } else { d };
     }
 }
 
@@ -182,8 +184,8 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
     }
 }
 
-fn corner<R: Real>(s: &SupportPoint<R>) -> Corner<R> {
-    Corner::new(V2::from_glam(s.point), s.id)
+fn corner<R: Real>(s: &SupportPoint<R>, curved: bool) -> Corner<R> {
+    Corner::new(V2::from_glam(s.point), s.id, curved)
 }
 
 pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
@@ -196,7 +198,8 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     // curved cores): as a function out of line on bare metal it put a frame
     // of its own under EPA's, 64 B more peak stack for a penetration query
     // in f32 on the M4F.
-    let support = |d: V2<R>| corner(&difference.support(d.to_glam()));
+    let curved = !difference.is_polytope();
+    let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
 
@@ -208,13 +211,18 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     // A point that repeats one already in is left out: an edge needs two.
     polytope.clear_all();
     let ccw = match simplex {
-        [a, b, c] => (corner(b).w - corner(a).w).cross(corner(c).w - corner(a).w) >= R::ZERO,
+        [a, b, c] => {
+            let w = |s: &SupportPoint<R>| corner(s, curved).w;
+            (w(b) - w(a)).cross(w(c) - w(a)) >= R::ZERO
+        }
         _ => true,
     };
     // No simplex at all (a solver called by hand) is taken as the origin.
     for k in 0..simplex.len().max(1) {
         // Clockwise triangles are read backwards from their first point.
-        let c = simplex.get(if ccw || k == 0 { k } else { 3 - k }).map_or(Corner::new(V2::zero(), NO_ID), corner);
+        let c = simplex
+            .get(if ccw || k == 0 { k } else { 3 - k })
+            .map_or(Corner::new(V2::zero(), NO_ID, curved), |s| corner(s, curved));
         if polytope.items().iter().all(|p| p.w != c.w) {
             polytope.insert_at(polytope.items().len(), c);
         }
@@ -223,7 +231,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     for i in 0..n {
         let q = cyclic(polytope.items(), i + 1).w;
         if let Some(c) = polytope.items_mut().get_mut(i) {
-            c.set_edge_distance(edge(c.w, q).0);
+            c.set_edge_distance(edge(c.w, q).0, curved);
         }
     }
 
@@ -265,7 +273,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             return estimate(best, upper, (upper - lower).max(R::ZERO), iterations, Status::Converged);
         }
         let mut new = w;
-        new.set_edge_distance(edge(w.w, q.w).0);
+        new.set_edge_distance(edge(w.w, q.w).0, curved);
         let at = j.max(i + 1);
         // Where the edge's start `p` is once `new` is in.
         let start = if polytope.insert_at(at, new) {
@@ -274,7 +282,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             // Full: `new` takes the place of a corner that no longer matters,
             // moved to where it belongs (the corners between shift by one).
             let items = polytope.items_mut();
-            let Some(k) = prune(items, i, upper) else {
+            let Some(k) = prune(items, i, upper, curved) else {
                 break (i, lower, Status::CapacityLimit);
             };
             if let Some(slot) = items.get_mut(k) {
@@ -289,7 +297,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             }
         };
         if let Some(c) = polytope.items_mut().get_mut(start) {
-            c.set_edge_distance(edge(p.w, w.w).0);
+            c.set_edge_distance(edge(p.w, w.w).0, curved);
         }
     };
     // Without a polish: the best achievable answer seen, or (before any
@@ -422,7 +430,7 @@ fn finish_curved<R: Real, S: Storage<R>>(
 /// of the closest edge (starting at `closest`) are kept. The corner before
 /// the dropped one starts the chord and gets its distance. `None` when no
 /// corner qualifies.
-fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R) -> Option<usize> {
+fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R, curved: bool) -> Option<usize> {
     let n = items.len();
     let mut farthest: Option<(usize, usize, R)> = None;
     // Neighbour indices walked along, not computed modulo `n` (a division).
@@ -440,7 +448,7 @@ fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R) -> Option<u
         before = k;
     }
     let (k, before, chord) = farthest?;
-    items.get_mut(before)?.set_edge_distance(chord);
+    items.get_mut(before)?.set_edge_distance(chord, curved);
     Some(k)
 }
 
