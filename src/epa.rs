@@ -102,8 +102,8 @@ impl<R: Real> Corner<R> {
     }
     #[inline(always)]
     fn set_edge_distance(&mut self, d: R, curved: bool) {
-        // A distance that rounded to -0.0 must not flip the flag.
-        let d = d.abs();
+        // `d` comes from `edge`, which never gives -0.0 (`max` with +0.0
+        // returns +0.0): a -0.0 here would flip the flag.
         self.signed_distance = if curved && self.on_curve() { -d } else { d };
     }
 }
