@@ -423,16 +423,16 @@ fn finish_curved<R: Real, S: Storage<R>>(
     estimate(u, depth, (depth - lower).max(R::ZERO), iterations, Status::Converged)
 }
 
-/// The corner to drop from a full polytope: one whose two edges, merged
-/// into one chord, stay at least `upper` from the origin (the farthest such
-/// chord), so the chord can never become the closest edge before EPA
-/// converges and the polytope stays convex and around the origin. The ends
-/// of the closest edge (starting at `closest`) are kept. The corner before
-/// the dropped one starts the chord and gets its distance. `None` when no
-/// corner qualifies.
+/// The corner to drop from a full polytope: the first whose two edges,
+/// merged into one chord, stay at least `upper` from the origin. Such a
+/// chord can never become the closest edge before EPA converges (if it were
+/// the closest, the bounds would already have met), and the polytope stays
+/// convex and around the origin; so any such corner will do, and the first
+/// costs the fewest chords. The ends of the closest edge (starting at
+/// `closest`) are kept. The corner before the dropped one starts the chord
+/// and gets its distance. `None` when no corner qualifies.
 fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R, curved: bool) -> Option<usize> {
     let n = items.len();
-    let mut farthest: Option<(usize, usize, R)> = None;
     // Neighbour indices walked along, not computed modulo `n` (a division).
     let mut before = n.wrapping_sub(1);
     for k in 0..n {
@@ -441,15 +441,14 @@ fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R, curved: boo
             (k == closest || before == closest, items.get(before), items.get(after))
         {
             let chord = edge(prev.w, next.w).0;
-            if chord >= upper && farthest.is_none_or(|(_, _, d)| chord > d) {
-                farthest = Some((k, before, chord));
+            if chord >= upper {
+                items.get_mut(before)?.set_edge_distance(chord, curved);
+                return Some(k);
             }
         }
         before = k;
     }
-    let (k, before, chord) = farthest?;
-    items.get_mut(before)?.set_edge_distance(chord, curved);
-    Some(k)
+    None
 }
 
 fn estimate<R: Real>(
