@@ -302,11 +302,12 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     };
     // Without a polish: the best achievable answer seen, or (before any
     // support was taken) the closest chord.
-    let fallback = if upper.is_finite() {
-        estimate(best, upper, (upper - lower).max(R::ZERO), iterations, status)
+    let (normal, depth, gap) = if upper.is_finite() {
+        (best, upper, (upper - lower).max(R::ZERO))
     } else {
-        estimate(V2::new(R::ONE, R::ZERO), lower, R::ZERO, iterations, status)
+        (V2::new(R::ONE, R::ZERO), lower, R::ZERO)
     };
+    let fallback = estimate(normal, depth, gap, iterations, status);
     // Polytopes have no curved region to polish: a firmware with polytopes
     // alone then links none of it.
     if difference.is_polytope() {
