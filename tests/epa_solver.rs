@@ -1,0 +1,230 @@
+//! EPA as a user calls it (`PenetrationSolver::solve`), on a Minkowski
+//! difference that is a convex polygon with integer vertices, so the exact
+//! depth is a ratio of integers: the smallest (cross(p, q))^2 / |q - p|^2
+//! over the edges, computed in i128 and divided once.
+//!
+//! The seeds are the ones GJK can hand over (a point, an edge or a triangle
+//! around the origin, in either winding), plus what only a hand call can
+//! give (repeated points, no points), and a polytope too small for the
+//! polygon (`Epa<_, 3>`), where EPA must prune and still answer soundly.
+
+use gjk2d::glam::DVec2;
+use gjk2d::{Epa, EpaConfig, MinkowskiDifference, PenetrationSolver, Status, SupportPoint};
+
+/// A convex polygon (counter-clockwise, integer vertices) posing as B - A.
+struct Difference {
+    vertices: Vec<(i64, i64)>,
+}
+
+impl Difference {
+    fn new(vertices: &[(i64, i64)]) -> Self {
+        let n = vertices.len();
+        for i in 0..n {
+            let (a, b, c) = (vertices[i], vertices[(i + 1) % n], vertices[(i + 2) % n]);
+            let turn = (b.0 - a.0) * (c.1 - b.1) - (b.1 - a.1) * (c.0 - b.0);
+            assert!(turn > 0, "test polygon must be strictly convex and counter-clockwise");
+        }
+        Self { vertices: vertices.to_vec() }
+    }
+
+    fn point(&self, i: usize) -> SupportPoint<f64> {
+        let (x, y) = self.vertices[i];
+        SupportPoint { point: DVec2::new(x as f64, y as f64), id: i as u32 }
+    }
+
+    /// The exact depth, squared: the smallest squared distance from the
+    /// origin to an edge's line (the origin is inside or on the boundary).
+    fn exact_depth_squared(&self) -> f64 {
+        let n = self.vertices.len();
+        let mut best: Option<(i128, i128)> = None;
+        for i in 0..n {
+            let (p, q) = (self.vertices[i], self.vertices[(i + 1) % n]);
+            let cross = p.0 as i128 * q.1 as i128 - p.1 as i128 * q.0 as i128;
+            assert!(cross >= 0, "the origin must be inside the test polygon");
+            let (dx, dy) = ((q.0 - p.0) as i128, (q.1 - p.1) as i128);
+            let (num, den) = (cross * cross, dx * dx + dy * dy);
+            // num / den < best.0 / best.1, compared exactly.
+            if best.is_none_or(|(bn, bd)| num * bd < bn * den) {
+                best = Some((num, den));
+            }
+        }
+        let (num, den) = best.unwrap();
+        num as f64 / den as f64
+    }
+}
+
+impl MinkowskiDifference<f64> for Difference {
+    fn support(&self, direction: DVec2) -> SupportPoint<f64> {
+        let mut best = 0;
+        for i in 1..self.vertices.len() {
+            if self.point(i).point.dot(direction) > self.point(best).point.dot(direction) {
+                best = i;
+            }
+        }
+        self.point(best)
+    }
+    fn scale(&self) -> f64 {
+        self.vertices.iter().map(|&(x, y)| ((x * x + y * y) as f64).sqrt()).fold(0.0, f64::max)
+    }
+    fn is_polytope(&self) -> bool {
+        true
+    }
+}
+
+fn check_depth(name: &str, difference: &Difference, simplex: &[SupportPoint<f64>]) {
+    let estimate = Epa::<f64>::default().solve(difference, simplex);
+    let exact = difference.exact_depth_squared().sqrt();
+    let tolerance = 1e-12 * difference.scale();
+    assert_eq!(estimate.status, Status::Converged, "{name}: {estimate:?}");
+    assert!((estimate.depth - exact).abs() <= tolerance, "{name}: depth {} against exact {exact}", estimate.depth);
+    assert!((estimate.normal.length() - 1.0).abs() <= 1e-15, "{name}: normal {:?}", estimate.normal);
+    // Moving B by `depth` along `normal` must separate: the difference's
+    // support against the normal reaches no further than `depth`.
+    let reach = difference.support(-estimate.normal).point.dot(-estimate.normal);
+    assert!(reach <= estimate.depth + tolerance, "{name}: reach {reach} beyond depth {}", estimate.depth);
+}
+
+/// A hexagon around the origin, no edge through it.
+fn hexagon() -> Difference {
+    Difference::new(&[(-5, -3), (4, -4), (7, 1), (3, 6), (-2, 5), (-6, 1)])
+}
+
+#[test]
+fn triangle_seeds_in_either_winding() {
+    let d = hexagon();
+    // Vertices 0, 2 and 4 enclose the origin.
+    let (a, b, c) = (d.point(0), d.point(2), d.point(4));
+    check_depth("counter-clockwise triangle", &d, &[a, b, c]);
+    check_depth("clockwise triangle", &d, &[a, c, b]);
+}
+
+#[test]
+fn an_edge_through_the_origin_is_widened_by_the_loop() {
+    // Vertices 0 and 3 of this quadrilateral are opposite, on a line
+    // through the origin: GJK's touching exit with two points.
+    let d = Difference::new(&[(-4, -4), (3, -5), (6, 6), (-5, 2)]);
+    check_depth("edge seed", &d, &[d.point(0), d.point(2)]);
+    check_depth("edge seed, reversed", &d, &[d.point(2), d.point(0)]);
+    // A repeated point is left out: the same edge.
+    check_depth("edge seed with a repeat", &d, &[d.point(0), d.point(0), d.point(2)]);
+}
+
+#[test]
+fn a_point_at_the_origin_on_the_boundary_gives_zero_depth() {
+    // The origin is a vertex of the difference: touching.
+    let d = Difference::new(&[(0, 0), (5, 1), (4, 6), (-1, 4)]);
+    check_depth("point seed at a vertex", &d, &[d.point(0)]);
+}
+
+#[test]
+fn an_edge_on_the_boundary_gives_zero_depth() {
+    // The origin is inside the bottom edge: touching along it.
+    let d = Difference::new(&[(-3, 0), (4, 0), (2, 5), (-2, 4)]);
+    check_depth("edge seed on the boundary", &d, &[d.point(0), d.point(1)]);
+}
+
+#[test]
+fn no_seed_at_all_is_an_answer_not_a_panic() {
+    let d = hexagon();
+    let estimate = Epa::<f64>::default().solve(&d, &[]);
+    assert!(estimate.depth.is_finite() && estimate.error_bound.is_finite(), "{estimate:?}");
+    assert!((estimate.normal.length() - 1.0).abs() <= 1e-15, "{estimate:?}");
+}
+
+/// A 64-gon of radius 1000 with integer vertices (rounded from a regular
+/// one, still strictly convex), around the origin but not centred on it.
+fn many_sided() -> Difference {
+    let vertices: Vec<(i64, i64)> = (0..64)
+        .map(|k| {
+            let angle = k as f64 * core::f64::consts::TAU / 64.0;
+            ((1000.0 * angle.cos()).round() as i64 + 137, (1000.0 * angle.sin()).round() as i64 - 71)
+        })
+        .collect();
+    Difference::new(&vertices)
+}
+
+#[test]
+fn roomy_polytope_converges_exactly() {
+    let d = many_sided();
+    check_depth("64-gon", &d, &[d.point(0), d.point(21), d.point(42)]);
+}
+
+#[test]
+fn a_full_polytope_stays_sound() {
+    let d = many_sided();
+    let exact = d.exact_depth_squared().sqrt();
+    let tolerance = 1e-12 * d.scale();
+    let mut limited = 0;
+    for n in [3usize, 4, 8] {
+        let config = EpaConfig::default();
+        let simplex = [d.point(0), d.point(21), d.point(42)];
+        let estimate = match n {
+            3 => Epa::<f64, 3>::new(config).solve(&d, &simplex),
+            4 => Epa::<f64, 4>::new(config).solve(&d, &simplex),
+            _ => Epa::<f64, 8>::new(config).solve(&d, &simplex),
+        };
+        // Whatever the status, the answer is achievable (an upper bound of
+        // the depth) and its error bound reaches down to the exact depth.
+        assert!(estimate.depth + tolerance >= exact, "N = {n}: depth {} below exact {exact}", estimate.depth);
+        assert!(
+            estimate.depth - estimate.error_bound <= exact + tolerance,
+            "N = {n}: bound {} above exact {exact}",
+            estimate.depth - estimate.error_bound
+        );
+        let reach = d.support(-estimate.normal).point.dot(-estimate.normal);
+        assert!(reach <= estimate.depth + tolerance, "N = {n}: reach {reach} beyond depth {}", estimate.depth);
+        if estimate.status == Status::Converged {
+            assert!((estimate.depth - exact).abs() <= tolerance, "N = {n}: converged to {}", estimate.depth);
+        } else {
+            assert_eq!(estimate.status, Status::CapacityLimit, "N = {n}");
+            limited += 1;
+        }
+    }
+    assert!(limited > 0, "no capacity was too small: the test checks nothing");
+}
+
+#[test]
+fn a_full_polytope_prunes_and_still_converges_exactly() {
+    // A thin 25-gon (an ellipse 77197 by 1041, turned), the origin near its
+    // long side: EPA first explores the far ends, whose corners stop
+    // mattering once the long side is found; with room for 6 corners it
+    // must drop one to go on.
+    let d = Difference::new(&[
+        (16127, 76027),
+        (15366, 73710),
+        (13638, 66795),
+        (11052, 55717),
+        (7770, 41172),
+        (3997, 24073),
+        (-28, 5496),
+        (-4053, -13392),
+        (-7825, -31405),
+        (-11106, -47411),
+        (-13692, -60404),
+        (-15419, -69568),
+        (-16179, -74327),
+        (-15924, -74381),
+        (-14670, -69728),
+        (-12495, -60660),
+        (-9538, -47747),
+        (-5982, -31799),
+        (-2053, -13820),
+        (2004, 5062),
+        (5934, 23659),
+        (9488, 40804),
+        (12446, 55418),
+        (14619, 66585),
+        (15872, 73601),
+    ]);
+    let simplex = [d.point(0), d.point(8), d.point(16)];
+    let estimate = Epa::<f64, 6>::new(EpaConfig::default()).solve(&d, &simplex);
+    let exact = d.exact_depth_squared().sqrt();
+    assert_eq!(estimate.status, Status::Converged, "{estimate:?}");
+    assert!((estimate.depth - exact).abs() <= 1e-12 * d.scale(), "depth {} against exact {exact}", estimate.depth);
+    // Every support but the last was inserted: more than the 3 free slots,
+    // so at least one corner was pruned (polytopes have no polish).
+    assert!(estimate.iterations - 1 > 6 - 3, "no pruning happened: {estimate:?}");
+    // The same answer as with room to spare.
+    let roomy = Epa::<f64>::default().solve(&d, &simplex);
+    assert!((roomy.depth - estimate.depth).abs() <= 1e-12 * d.scale(), "{roomy:?} against {estimate:?}");
+}
