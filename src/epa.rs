@@ -227,10 +227,13 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             polytope.insert_at(polytope.items().len(), c);
         }
     }
-    let n = polytope.items().len();
+    let items = polytope.items_mut();
+    let n = items.len();
     for i in 0..n {
-        let q = cyclic(polytope.items(), i + 1).w;
-        if let Some(c) = polytope.items_mut().get_mut(i) {
+        // The next corner, cyclically, without a division.
+        let next = if i + 1 < n { i + 1 } else { 0 };
+        let Some(q) = items.get(next).map(|c| c.w) else { break };
+        if let Some(c) = items.get_mut(i) {
             c.set_edge_distance(edge(c.w, q).0, curved);
         }
     }
