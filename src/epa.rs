@@ -305,12 +305,11 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     };
     // Without a polish: the best achievable answer seen, or (before any
     // support was taken) the closest chord.
-    let (normal, depth, gap) = if upper.is_finite() {
-        (best, upper, (upper - lower).max(R::ZERO))
+    let fallback = if upper.is_finite() {
+        estimate(best, upper, (upper - lower).max(R::ZERO), iterations, status)
     } else {
-        (V2::new(R::ONE, R::ZERO), lower, R::ZERO)
+        estimate(V2::new(R::ONE, R::ZERO), lower, R::ZERO, iterations, status)
     };
-    let fallback = estimate(normal, depth, gap, iterations, status);
     // Polytopes have no curved region to polish: a firmware with polytopes
     // alone then links none of it.
     if difference.is_polytope() {
