@@ -240,8 +240,8 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
 
     let mut upper = R::INFINITY;
     let mut best = V2::new(R::ONE, R::ZERO);
-    // Ends by returning a converged answer, or by breaking with the limit it
-    // hit, the closest edge and its distance (then polished where curved).
+    // Ends with how it ended, the closest edge and its distance (polished
+    // where curved, if it stopped short).
     let (closest, lower, status) = loop {
         let items = polytope.items();
         let n = items.len();
@@ -273,11 +273,13 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         // vertex ids give equal points, computed the same way).
         let repeated = w.w == p.w || w.w == q.w;
         if repeated || upper - lower <= tolerance {
-            return estimate(best, upper, (upper - lower).max(R::ZERO), iterations, Status::Converged);
+            break (i, lower, Status::Converged);
         }
         let mut new = w;
         new.set_edge_distance(edge(w.w, q.w).0, curved);
-        let at = j.max(i + 1);
+        // Right after the edge's start (after the last corner when the edge
+        // closes the polygon).
+        let at = i + 1;
         // Where the edge's start `p` is once `new` is in.
         let start = if polytope.insert_at(at, new) {
             i
@@ -303,16 +305,16 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             c.set_edge_distance(edge(p.w, w.w).0, curved);
         }
     };
-    // Without a polish: the best achievable answer seen, or (before any
-    // support was taken) the closest chord.
+    // Converged, or stopped short without a polish: the best achievable
+    // answer seen, or (before any support was taken) the closest chord.
     let fallback = if upper.is_finite() {
         estimate(best, upper, (upper - lower).max(R::ZERO), iterations, status)
     } else {
         estimate(V2::new(R::ONE, R::ZERO), lower, R::ZERO, iterations, status)
     };
     // Polytopes have no curved region to polish: a firmware with polytopes
-    // alone then links none of it.
-    if difference.is_polytope() {
+    // alone then links none of it. A converged answer needs none either.
+    if difference.is_polytope() || status == Status::Converged {
         return fallback;
     }
     finish_curved(polytope, closest, &support, lower, upper, tolerance, iterations, fallback)

@@ -86,7 +86,8 @@ where
     let mut lower_bound = R::ZERO;
     let mut previous = R::INFINITY;
     let mut iterations = 1;
-    loop {
+    // One exit for both ways of ending apart (one copy of the result).
+    let (v, status) = loop {
         // Ids before the reduction: a vertex dropped now and found again next
         // is a repeat too (Box2D compares with the saved vertices likewise).
         let before = simplex.ids();
@@ -107,7 +108,7 @@ where
         let stalled = vv > previous;
         previous = vv;
         if !stalled && iterations >= max_iterations {
-            return separated(simplex, v, lower_bound, iterations, Status::IterationLimit);
+            break (v, Status::IterationLimit);
         }
         let w = pair.support_shared(-v);
         iterations += 1;
@@ -125,10 +126,11 @@ where
         // simplex is a repeat of one before it too.)
         let repeat = repeats(&before, w.id) && (length - lower_bound <= repeat_gap || simplex.ids().contains(&w.id));
         if stalled || repeat || gap_closed {
-            return separated(simplex, v, lower_bound, iterations, Status::Converged);
+            break (v, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));
-    }
+    };
+    separated(simplex, v, lower_bound, iterations, status)
 }
 
 /// The simplex of the first support point, for [`core_distance`]. Inlined,
