@@ -198,11 +198,11 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     difference: &M,
     simplex: &[SupportPoint<R>],
 ) -> PenetrationEstimate<R> {
+    let curved = !difference.is_polytope();
     // A closure, inlined where it is called (the loop, and the polish for
     // curved cores): as a function out of line on bare metal it put a frame
     // of its own under EPA's, 64 B more peak stack for a penetration query
     // in f32 on the M4F.
-    let curved = !difference.is_polytope();
     let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
@@ -216,7 +216,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     polytope.clear_all();
     let ccw = match simplex {
         [a, b, c] => {
-            let w = |s: &SupportPoint<R>| corner(s, curved).w;
+            let w = |s: &SupportPoint<R>| V2::<R>::from_glam(s.point);
             (w(b) - w(a)).cross(w(c) - w(a)) >= R::ZERO
         }
         _ => true,

@@ -186,9 +186,9 @@ fn a_full_polytope_stays_sound() {
 #[test]
 fn a_full_polytope_prunes_and_still_converges_exactly() {
     // A thin 25-gon (an ellipse 77197 by 1041, turned), the origin near its
-    // long side: EPA first explores the far ends, whose corners stop
-    // mattering once the long side is found; with room for 6 corners it
-    // must drop one to go on.
+    // long side, found by a search for a case where room for 6 corners is
+    // not enough: EPA must drop one to go on (the iteration count below
+    // shows that it did).
     let d = Difference::new(&[
         (16127, 76027),
         (15366, 73710),
