@@ -366,26 +366,16 @@ fn finish_curved<R: Real, S: Storage<R>>(
     iterations += 1;
     let (mut a, mut g0, mut b, mut g1) = (normal, slope_here, normal, slope_here);
     let steps = n.min(8);
-    if slope_here <= R::ZERO {
-        for k in 1..=steps {
-            let u = edge_normal(closest + k);
-            let g = slope(u);
-            iterations += 1;
-            (a, g0, b, g1) = (b, g1, u, g);
-            if g >= R::ZERO {
-                break;
-            }
-        }
-    } else {
-        for k in 1..=steps {
-            // k <= steps <= n: going back k edges, cyclically.
-            let u = edge_normal(closest + n - k);
-            let g = slope(u);
-            iterations += 1;
-            (a, g0, b, g1) = (u, g, a, g0);
-            if g <= R::ZERO {
-                break;
-            }
+    // One loop for either way: each copy held an inlined support call.
+    let forward = slope_here <= R::ZERO;
+    for k in 1..=steps {
+        // k <= steps <= n: going back k edges is going forward n - k.
+        let u = edge_normal(closest + if forward { k } else { n - k });
+        let g = slope(u);
+        iterations += 1;
+        (a, g0, b, g1) = if forward { (b, g1, u, g) } else { (u, g, a, g0) };
+        if (forward && g >= R::ZERO) || (!forward && g <= R::ZERO) {
+            break;
         }
     }
     if !(g0 <= R::ZERO && g1 >= R::ZERO) || a.cross(b) <= R::ZERO {

@@ -26,7 +26,11 @@ impl<R: Real> Ellipse<R> {
 /// Support of the ellipse with semi-axes `half` centered on the origin:
 /// `(a^2 dx, b^2 dy) / |(a dx, b dy)|`. The direction is first scaled by its
 /// largest component so neither tiny nor huge directions under- or overflow.
-#[inline]
+///
+/// Out of line on bare metal, like every shape's support code (see the
+/// `shape` module); the half ellipse shares it.
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn ellipse_support<R: Real>(half: V2<R>, d: V2<R>) -> V2<R> {
     let s = d.max_abs();
     if s == R::ZERO {

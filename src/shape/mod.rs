@@ -5,6 +5,15 @@
 //! set) swept by a *radius*. Circles and capsules are a point and a segment
 //! with a radius, so the queries handle their curvature in closed form and
 //! spend no iterations on it: they come out as exact as polygons.
+//!
+//! On bare-metal targets a shape's support code, where it is more than a
+//! few instructions, is one function out of line, which the trait's three
+//! support methods (`support`, `support_feature`, `support_feature_near`)
+//! call. Inlined, each method held its own copy, and a firmware that reaches
+//! shapes through `dyn SupportMap` links every method of every shape: 1.0 KB
+//! of flash with every shape and query on the M4F. The call costs an
+//! ellipse's GJK ray cast 2% more instructions there (its distance query
+//! measured 5% fewer). Hosts inline it for speed.
 
 mod capsule;
 mod circle;

@@ -33,7 +33,9 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
     fn support(&self, d: R::Vector) -> R::Vector {
         self.support_feature(d).0
     }
-    #[inline]
+    // Out of line on bare metal: see the `shape` module.
+    #[cfg_attr(target_os = "none", inline(never))]
+    #[cfg_attr(not(target_os = "none"), inline)]
     fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
         let d = V2::<R>::from_glam(direction);
         // Ids follow the counter-clockwise corner order from (-x, -y).
