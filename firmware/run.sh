@@ -11,6 +11,7 @@
 # but rustup components and targets.
 #
 # ALLOW_PANIC_PATHS=1 reports surviving panic paths without failing.
+# ENFORCE_BUDGETS=1 fails on the known budget misses too; =0 only reports.
 set -euo pipefail
 cd "$(dirname "$0")"
 FW="$(pwd)"
@@ -22,13 +23,32 @@ start=$(date +%s)
 failures=()
 misses=()
 fail() { failures+=("$*"); echo "FAILED: $*"; }
-# Flash and stack budgets are measured and reported on every run; a miss
-# fails the run only with ENFORCE_BUDGETS=1 (the known misses are listed in
-# README.md; CI enforces the tests, the golden hash and the no-panic check).
+# Flash and stack budgets. A budget met is enforced: a change that breaks
+# it fails the run. The known misses (README.md says why) are reported and
+# fail only with ENFORCE_BUDGETS=1. Sizes depend on the compiler, so budgets
+# are enforced with the rustc they were measured with (BUDGET_RUSTC) and only
+# reported under another (ENFORCE_BUDGETS=0 reports everything).
+BUDGET_RUSTC="1.95.0"
+KNOWN_MISSES=(
+  "flash budget: (5) every shape and query, f32 "
+  "stack budget: f64 distance "
+  "stack budget: f64 penetration "
+  "stack budget: f64 raycast ellipse (GJK ray cast) "
+)
+known_misses=()
 miss() {
-  misses+=("$*")
-  echo "BUDGET MISSED: $*"
-  if [ "${ENFORCE_BUDGETS:-0}" = 1 ]; then failures+=("$*"); fi
+  local known=0 m
+  for m in "${KNOWN_MISSES[@]}"; do [[ "$*" == "$m"* ]] && known=1; done
+  if [ "$known" = 1 ]; then
+    known_misses+=("$*")
+    echo "BUDGET MISSED (known): $*"
+    [ "${ENFORCE_BUDGETS:-}" = 1 ] && failures+=("$*")
+  else
+    misses+=("$*")
+    echo "BUDGET MISSED: $*"
+    [ "$enforce_budgets" = 1 ] && failures+=("$*")
+  fi
+  return 0
 }
 step() { printf '\n--- %s ---\n' "$*"; }
 
@@ -37,6 +57,12 @@ M0=thumbv6m-none-eabi
 rustup component add llvm-tools >/dev/null 2>&1 || rustup component add llvm-tools
 rustup target add "$M4" "$M0" >/dev/null 2>&1 || rustup target add "$M4" "$M0"
 HOST="$(rustc -vV | sed -n 's/^host: //p')"
+RUSTC_VERSION="$(rustc -vV | sed -n 's/^release: //p')"
+case "${ENFORCE_BUDGETS:-}" in
+  1) enforce_budgets=1 ;;
+  0) enforce_budgets=0 ;;
+  *) if [ "$RUSTC_VERSION" = "$BUDGET_RUSTC" ]; then enforce_budgets=1; else enforce_budgets=0; fi ;;
+esac
 LLVM_BIN="$(rustc --print sysroot)/lib/rustlib/$HOST/bin"
 SIZE="$LLVM_BIN/llvm-size"
 OBJDUMP="$LLVM_BIN/llvm-objdump"
@@ -239,8 +265,14 @@ done
 
 step "summary"
 echo "run.sh took $(($(date +%s) - start)) s"
+if [ "$enforce_budgets" = 1 ]; then
+  echo "budgets enforced (rustc $RUSTC_VERSION); ${#known_misses[@]} known miss(es) reported:"
+else
+  echo "budgets reported, not enforced (rustc $RUSTC_VERSION, measured with $BUDGET_RUSTC); ${#known_misses[@]} known miss(es):"
+fi
+[ ${#known_misses[@]} -eq 0 ] || printf '  %s\n' "${known_misses[@]}"
 if [ ${#misses[@]} -gt 0 ]; then
-  echo "${#misses[@]} budget(s) missed (reported, see the tables; ENFORCE_BUDGETS=1 fails on them):"
+  echo "${#misses[@]} budget(s) missed that were met before:"
   printf '  %s\n' "${misses[@]}"
 fi
 if [ ${#failures[@]} -gt 0 ]; then
