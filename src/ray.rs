@@ -116,13 +116,12 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
     RayCast::closed_form(hit(o, d, t, normal))
 }
 
-/// Ray against the segment `a`-`a + delta` swept by `r` (> 0). The first hit
-/// on the union of the side band and the two end disks is the first hit of
-/// any of them.
+/// Ray against the segment `a`-`a + delta` swept by `r` (> 0, as a
+/// [`Capsule`](crate::Capsule) has). The first hit on the union of the side
+/// band and the two end disks is the first hit of any of them. A bare
+/// segment has its own cast ([`cast_ray_segment`]), so a firmware with
+/// capsules links none of it.
 pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
-    if r <= R::ZERO {
-        return cast_ray_segment(a, delta, o, d, max);
-    }
     let len2 = delta.length_squared();
     let rel = o - a;
     // Closest point of the core to the ray origin decides "inside".
@@ -165,7 +164,7 @@ pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, 
 /// a ray nearly along its line is ill-conditioned: an end point the ray
 /// passes within rounding distance of counts as hit, as a user expects of a
 /// ray aimed along a wall.
-fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+pub(crate) fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let rel = a - o;
     let slack = R::from_u32(4) * R::EPSILON;
     // An origin on the segment (to rounding) is on the shape.

@@ -1,5 +1,5 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_capsule, LocalRayCast};
+use crate::ray::{cast_ray_segment, LocalRayCast};
 use crate::real::{Real, V2};
 use crate::transform::check_point;
 use crate::Error;
@@ -64,6 +64,6 @@ impl<R: Real> SupportMap<R> for Segment<R> {
         self.start.to_glam()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_capsule(V2::zero(), self.delta, R::ZERO, V2::from_glam(o), V2::from_glam(d), max))
+        Some(cast_ray_segment(V2::zero(), self.delta, V2::from_glam(o), V2::from_glam(d), max))
     }
 }
