@@ -374,7 +374,9 @@ fn finish_curved<R: Real, S: Storage<R>>(
         let g = slope(u);
         iterations += 1;
         (a, g0, b, g1) = if forward { (b, g1, u, g) } else { (u, g, a, g0) };
-        if (forward && g >= R::ZERO) || (!forward && g <= R::ZERO) {
+        // The slope changed sign: the root is bracketed.
+        let bracketed = if forward { g >= R::ZERO } else { g <= R::ZERO };
+        if bracketed {
             break;
         }
     }

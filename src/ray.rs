@@ -120,7 +120,7 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
 /// [`Capsule`](crate::Capsule) has). The first hit on the union of the side
 /// band and the two end disks is the first hit of any of them. A bare
 /// segment has its own cast ([`cast_ray_segment`]), so a firmware with
-/// capsules links none of it.
+/// capsules links no segment cast.
 pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let len2 = delta.length_squared();
     let rel = o - a;
