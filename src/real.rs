@@ -11,7 +11,7 @@ use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 mod sealed {
     /// Also how generic code reaches per-type `const fn`s.
-    pub trait Sealed: crate::shape::ConstChecks {}
+    pub trait Sealed: crate::shape::ConstChecks + crate::shape::SliceConst {}
     impl Sealed for f32 {}
     impl Sealed for f64 {}
 }

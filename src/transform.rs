@@ -108,19 +108,9 @@ pub(crate) fn check_point<R: Real>(p: V2<R>) -> Result<V2<R>, Error> {
     R::check_point(p).map(|()| p)
 }
 
-/// A length (radius, half-extent) must be finite, positive and within range.
-///
-/// Not inlined on bare metal: a firmware with every shape calls it from a
-/// dozen constructors.
-#[cfg_attr(target_os = "none", inline(never))]
+/// A length (radius, half-extent) must be finite, positive and within range:
+/// the same check a constant shape's lengths get at compile time.
+#[inline(always)]
 pub(crate) fn check_length<R: Real>(r: R) -> Result<R, Error> {
-    if !r.is_finite() {
-        Err(Error::NonFinite)
-    } else if r <= R::ZERO {
-        Err(Error::NonPositive)
-    } else if r > R::MAX_COORDINATE {
-        Err(Error::OutOfRange)
-    } else {
-        Ok(r)
-    }
+    R::check_length(r)
 }

@@ -1,4 +1,6 @@
-//! Sine and cosine of an f32 angle in f32 arithmetic only.
+//! Sine and cosine of an f32 angle in f32 arithmetic only, and of an f64
+//! angle in a quarter turn; `const`, so constant shapes that need them
+//! (a [`Slice`](crate::Slice)) are computed by the compiler, to the same bits.
 //!
 //! libm's `sinf`/`cosf` reduce the angle in f64: on a Cortex-M4F (single
 //! precision FPU) or an M0 that links about 6 KB of soft double arithmetic
@@ -28,7 +30,7 @@ const QUADRANT_EXACT: f32 = 67_108_864.0;
 const REDUCED_BOUND: f32 = 1.6;
 
 /// `(sin x, cos x)`; a non-finite `x` gives `(0, 1)` (callers reject it first).
-pub(crate) fn sin_cos_f32(x: f32) -> (f32, f32) {
+pub(crate) const fn sin_cos_f32(x: f32) -> (f32, f32) {
     if !x.is_finite() {
         return (0.0, 1.0);
     }
@@ -40,8 +42,10 @@ pub(crate) fn sin_cos_f32(x: f32) -> (f32, f32) {
         y
     };
     let mut r = x;
-    for part in PIO2 {
-        r -= k * part;
+    let mut i = 0;
+    while i < PIO2.len() {
+        r -= k * PIO2[i];
+        i += 1;
     }
     // Only for angles beyond 2^24 * pi/2 can r leave the kernels' range;
     // keep it there (and the result finite).
@@ -61,7 +65,7 @@ pub(crate) fn sin_cos_f32(x: f32) -> (f32, f32) {
 
 /// sin on [-1.6, 1.6]: the Taylor series to r^13 (the next term is below
 /// 1e-9 there, under f32's rounding).
-fn sin_kernel(r: f32) -> f32 {
+const fn sin_kernel(r: f32) -> f32 {
     const S: [f32; 6] =
         [-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0, -1.0 / 39_916_800.0, 1.0 / 6_227_020_800.0];
     let z = r * r;
@@ -69,7 +73,7 @@ fn sin_kernel(r: f32) -> f32 {
 }
 
 /// cos on [-1.6, 1.6]: the series to r^14 (next term below 1e-10).
-fn cos_kernel(r: f32) -> f32 {
+const fn cos_kernel(r: f32) -> f32 {
     const C: [f32; 6] =
         [1.0 / 24.0, -1.0 / 720.0, 1.0 / 40_320.0, -1.0 / 3_628_800.0, 1.0 / 479_001_600.0, -1.0 / 87_178_291_200.0];
     let z = r * r;
@@ -80,9 +84,101 @@ fn cos_kernel(r: f32) -> f32 {
     w + (((1.0 - w) - half) + tail)
 }
 
+/// pi/2 as the nearest f64 and the rest.
+const PIO2_HI: f64 = core::f64::consts::FRAC_PI_2;
+const PIO2_LO: f64 = 6.123_233_995_736_766e-17;
+
+/// `(sin x, cos x)` for `x` in [0, pi/2] (a slice's half angle), in f64
+/// arithmetic only, so that it can be `const`: libm's, which the rest of the
+/// f64 code uses, is not. Above pi/4 it works on the complement
+/// `pi/2 - x`, exact there (Sterbenz) but for the low part of pi/2, so both
+/// kernels stay within |r| <= pi/4. Within one ulp of libm (the tests).
+pub(crate) const fn sin_cos_quarter_f64(x: f64) -> (f64, f64) {
+    if x <= core::f64::consts::FRAC_PI_4 {
+        (sin_kernel_f64(x), cos_kernel_f64(x))
+    } else {
+        let r = (PIO2_HI - x) + PIO2_LO;
+        (cos_kernel_f64(r), sin_kernel_f64(r))
+    }
+}
+
+/// sin on [-pi/4, pi/4]: the Taylor series to r^19 (the next term is below
+/// 1e-19 there, a thousandth of an ulp).
+const fn sin_kernel_f64(r: f64) -> f64 {
+    const S: [f64; 9] = [
+        -1.0 / 6.0,
+        1.0 / 120.0,
+        -1.0 / 5040.0,
+        1.0 / 362_880.0,
+        -1.0 / 39_916_800.0,
+        1.0 / 6_227_020_800.0,
+        -1.0 / 1_307_674_368_000.0,
+        1.0 / 355_687_428_096_000.0,
+        -1.0 / 121_645_100_408_832_000.0,
+    ];
+    let z = r * r;
+    let mut poly = S[8];
+    let mut i = 8;
+    while i > 0 {
+        i -= 1;
+        poly = S[i] + z * poly;
+    }
+    r + r * z * poly
+}
+
+/// cos on [-pi/4, pi/4]: the series to r^20, with 1 - r^2/2 compensated
+/// as in the f32 kernel.
+const fn cos_kernel_f64(r: f64) -> f64 {
+    const C: [f64; 9] = [
+        1.0 / 24.0,
+        -1.0 / 720.0,
+        1.0 / 40_320.0,
+        -1.0 / 3_628_800.0,
+        1.0 / 479_001_600.0,
+        -1.0 / 87_178_291_200.0,
+        1.0 / 20_922_789_888_000.0,
+        -1.0 / 6_402_373_705_728_000.0,
+        1.0 / 2_432_902_008_176_640_000.0,
+    ];
+    let z = r * r;
+    let mut poly = C[8];
+    let mut i = 8;
+    while i > 0 {
+        i -= 1;
+        poly = C[i] + z * poly;
+    }
+    let half = 0.5 * z;
+    let w = 1.0 - half;
+    w + (((1.0 - w) - half) + z * z * poly)
+}
+
 #[cfg(test)]
 mod tests {
-    use super::sin_cos_f32;
+    use super::{sin_cos_f32, sin_cos_quarter_f64};
+
+    /// Distance in ulps between two positive finite f64s.
+    fn ulps(a: f64, b: f64) -> u64 {
+        a.to_bits().abs_diff(b.to_bits())
+    }
+
+    #[test]
+    fn quarter_turn_f64_within_one_ulp_of_libm() {
+        // Dense in [0, pi/2], the ends and the switch at pi/4 included.
+        let n = 200_000;
+        let top = core::f64::consts::FRAC_PI_2;
+        let grid = (0..=n).map(|i| top * i as f64 / n as f64);
+        let quarter = core::f64::consts::FRAC_PI_4;
+        let edges = [quarter, f64::from_bits(quarter.to_bits() + 1), f64::from_bits(quarter.to_bits() - 1), top];
+        let tiny = (1..2000u64).map(|i| f64::from_bits(i * 1_000_000_000_000));
+        let angles = grid.chain(edges).chain(tiny);
+        for x in angles {
+            let (s, c) = sin_cos_quarter_f64(x);
+            let (es, ec) = (libm::sin(x), libm::cos(x));
+            assert!(ulps(s, es) <= 1 && ulps(c, ec) <= 1, "{x}: ({s}, {c}) against ({es}, {ec})");
+        }
+        assert_eq!(sin_cos_quarter_f64(0.0), (0.0, 1.0));
+        assert_eq!(sin_cos_quarter_f64(top).0, 1.0);
+    }
 
     /// Worst error in units of 2^-24 (half an ulp of 1), against f64 libm
     /// (correctly rounded to well below that).

@@ -46,6 +46,25 @@ impl<R: Real> Capsule<R> {
     }
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty, $checks:ident) => {
+        impl Capsule<$R> {
+            /// [`Capsule::new`] as a `const fn`: a capsule declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(a: $vector, b: $vector, radius: $R) -> Result<Self, Error> {
+                let radius = const_try!(super::polygon_frame::$checks::check_length(radius));
+                Ok(Self { core: const_try!(Segment::<$R>::new_const(a, b)), radius })
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2, single);
+const_constructors!(f64, glam::DVec2, double);
+
 impl<R: Real> SupportMap<R> for Capsule<R> {
     #[inline]
     fn support(&self, direction: R::Vector) -> R::Vector {

@@ -28,6 +28,51 @@ impl<R: Real> Circle<R> {
     }
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty, $checks:ident) => {
+        impl Circle<$R> {
+            /// [`Circle::new`] as a `const fn`: a circle declared as a
+            /// constant is checked when the program is compiled (an invalid
+            /// one fails the build) and stored bit for bit as `new` stores it.
+            /// Every shape has one (`Polygon`'s is `from_array`):
+            ///
+            /// ```
+            /// # use gjk2d::Circle;
+            #[doc = concat!("const WHEEL: Circle<", stringify!($R), "> = match Circle::<", stringify!($R), ">::new_const(0.5) {")]
+            ///     Ok(wheel) => wheel,
+            ///     Err(e) => panic!("{}", e.as_str()), // a compile error, never a run-time panic
+            /// };
+            /// assert_eq!(WHEEL.circle_radius(), 0.5);
+            /// ```
+            ///
+            /// A negative radius fails the build ("a radius, extent or length
+            /// must be positive"):
+            ///
+            /// ```compile_fail
+            /// # use gjk2d::Circle;
+            #[doc = concat!("const WHEEL: Circle<", stringify!($R), "> = match Circle::<", stringify!($R), ">::new_const(-0.5) {")]
+            ///     Ok(wheel) => wheel,
+            ///     Err(e) => panic!("{}", e.as_str()),
+            /// };
+            /// ```
+            pub const fn new_const(radius: $R) -> Result<Self, Error> {
+                Self::at_const(<$vector>::ZERO, radius)
+            }
+            /// [`Circle::at`] as a `const fn` (see [`new_const`](Self::new_const)).
+            pub const fn at_const(center: $vector, radius: $R) -> Result<Self, Error> {
+                let center = V2 { x: center.x, y: center.y };
+                const_try!(super::polygon_frame::$checks::check_point(center));
+                Ok(Self { center, radius: const_try!(super::polygon_frame::$checks::check_length(radius)) })
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2, single);
+const_constructors!(f64, glam::DVec2, double);
+
 impl<R: Real> SupportMap<R> for Circle<R> {
     #[inline]
     fn support(&self, _direction: R::Vector) -> R::Vector {

@@ -43,6 +43,24 @@ pub(crate) fn ellipse_support<R: Real>(half: V2<R>, d: V2<R>) -> V2<R> {
     V2::new(half.x * scaled.x, half.y * scaled.y) * (R::ONE / len)
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty, $checks:ident) => {
+        impl Ellipse<$R> {
+            /// [`Ellipse::new`] as a `const fn`: a ellipse declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(width: $R, height: $R) -> Result<Self, Error> {
+                Ok(Self { half: const_try!(super::polygon_frame::$checks::half_extents(width, height)) })
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2, single);
+const_constructors!(f64, glam::DVec2, double);
+
 impl<R: Real> SupportMap<R> for Ellipse<R> {
     #[inline]
     fn support(&self, d: R::Vector) -> R::Vector {

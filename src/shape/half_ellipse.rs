@@ -13,12 +13,14 @@ pub struct HalfEllipse<R: Real> {
     centroid: V2<R>,
 }
 
+/// The centroid's height over the flat side, per unit of height: 4 / (3 pi).
+const CENTROID_HEIGHT: f64 = 4.0 / (3.0 * core::f64::consts::PI);
+
 impl<R: Real> HalfEllipse<R> {
     /// `width` (the flat side) and `height` (of the dome), both > 0.
     pub fn new(width: R, height: R) -> Result<Self, Error> {
         let axes = V2::new(check_length(width)? * R::HALF, check_length(height)?);
-        // Centroid of a half ellipse: 4b / (3 pi) above the flat side.
-        let cy = R::from_f64(4.0 / (3.0 * core::f64::consts::PI)) * axes.y;
+        let cy = R::from_f64(CENTROID_HEIGHT) * axes.y;
         Ok(Self { axes, centroid: V2::new(R::ZERO, cy) })
     }
     pub fn half_width(&self) -> R {
@@ -28,6 +30,27 @@ impl<R: Real> HalfEllipse<R> {
         self.axes.y
     }
 }
+
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty, $checks:ident) => {
+        impl HalfEllipse<$R> {
+            /// [`HalfEllipse::new`] as a `const fn`: a half ellipse declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(width: $R, height: $R) -> Result<Self, Error> {
+                let width = const_try!(super::polygon_frame::$checks::check_length(width));
+                let height = const_try!(super::polygon_frame::$checks::check_length(height));
+                let axes = V2 { x: width * 0.5, y: height };
+                Ok(Self { axes, centroid: V2 { x: 0.0, y: CENTROID_HEIGHT as $R * axes.y } })
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2, single);
+const_constructors!(f64, glam::DVec2, double);
 
 impl<R: Real> SupportMap<R> for HalfEllipse<R> {
     #[inline]

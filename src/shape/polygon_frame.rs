@@ -1,10 +1,12 @@
-//! A polygon's validation and framing, written once as `const fn`s and
-//! generated for f32 and f64.
+//! The checks every shape's inputs get (points, lengths) and a polygon's
+//! validation and framing, written once as `const fn`s and generated for f32
+//! and f64.
 //!
-//! `const` because a firmware's shapes are usually fixed: a polygon declared
-//! as a constant ([`Polygon::from_array`](super::Polygon::from_array)) is
-//! checked by the compiler, an invalid one fails the build, and the program
-//! carries neither this code nor a copy of the vertices in RAM. Generated
+//! `const` because a firmware's shapes are usually fixed: a shape declared
+//! as a constant (its `*_const` constructor, or
+//! [`Polygon::from_array`](super::Polygon::from_array)) is checked by the
+//! compiler, an invalid one fails the build, and the program carries neither
+//! this code nor a copy of the shape in RAM. Generated
 //! per type because a `const fn` cannot do arithmetic through the [`Real`]
 //! trait. [`Polygon::new`](super::Polygon::new) runs the same functions at
 //! run time (through [`Real`]'s sealed supertrait), so a polygon built either
@@ -75,6 +77,10 @@ macro_rules! polygon_frame {
                 fn check_point(p: V2<$R>) -> Result<(), Error> {
                     check_point(p)
                 }
+                #[inline(always)]
+                fn check_length(r: $R) -> Result<$R, Error> {
+                    check_length(r)
+                }
                 #[inline]
                 fn frame_polygon(vertices: &mut [V2<$R>]) -> Result<Frame<$R>, Error> {
                     frame(vertices)
@@ -82,7 +88,7 @@ macro_rules! polygon_frame {
             }
 
             /// Finite, and within [`Real::MAX_COORDINATE`].
-            const fn check_point(p: V2<$R>) -> Result<(), Error> {
+            pub(crate) const fn check_point(p: V2<$R>) -> Result<(), Error> {
                 if !(p.x.is_finite() && p.y.is_finite()) {
                     Err(Error::NonFinite)
                 } else if max(p.x.abs(), p.y.abs()) > <$R as Real>::MAX_COORDINATE {
@@ -90,6 +96,32 @@ macro_rules! polygon_frame {
                 } else {
                     Ok(())
                 }
+            }
+
+            /// A length (radius, extent) must be finite, positive and within
+            /// [`Real::MAX_COORDINATE`].
+            ///
+            /// Not inlined on bare metal: a firmware with every shape calls
+            /// it from a dozen constructors.
+            #[cfg_attr(target_os = "none", inline(never))]
+            pub(crate) const fn check_length(r: $R) -> Result<$R, Error> {
+                if !r.is_finite() {
+                    Err(Error::NonFinite)
+                } else if r <= 0.0 {
+                    Err(Error::NonPositive)
+                } else if r > <$R as Real>::MAX_COORDINATE {
+                    Err(Error::OutOfRange)
+                } else {
+                    Ok(r)
+                }
+            }
+
+            /// Half of a `width` by `height` box, both checked as lengths:
+            /// what a rectangle and an ellipse keep.
+            pub(crate) const fn half_extents(width: $R, height: $R) -> Result<V2<$R>, Error> {
+                let width = const_try!(check_length(width));
+                let height = const_try!(check_length(height));
+                Ok(V2 { x: width * 0.5, y: height * 0.5 })
             }
 
             /// As [`Real::max`]: the same choice for equal values.
@@ -329,5 +361,6 @@ polygon_frame!(double, f64);
 /// point and of a polygon's framing, at compile time and at run time.
 pub trait ConstChecks: Sized {
     fn check_point(p: V2<Self>) -> Result<(), Error>;
+    fn check_length(r: Self) -> Result<Self, Error>;
     fn frame_polygon(vertices: &mut [V2<Self>]) -> Result<Frame<Self>, Error>;
 }

@@ -28,6 +28,24 @@ impl<R: Real> Rectangle<R> {
     }
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty, $checks:ident) => {
+        impl Rectangle<$R> {
+            /// [`Rectangle::new`] as a `const fn`: a rectangle declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(width: $R, height: $R) -> Result<Self, Error> {
+                Ok(Self { half: const_try!(super::polygon_frame::$checks::half_extents(width, height)) })
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2, single);
+const_constructors!(f64, glam::DVec2, double);
+
 impl<R: Real> SupportMap<R> for Rectangle<R> {
     #[inline]
     fn support(&self, d: R::Vector) -> R::Vector {

@@ -27,6 +27,32 @@ impl<R: Real, S: SupportMap<R>> Rounded<R, S> {
     }
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $checks:ident) => {
+        impl<S: SupportMap<$R>> Rounded<$R, S> {
+            /// [`Rounded::new`] as a `const fn`: a rounded declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(inner: S, radius: $R) -> Result<Self, Error> {
+                match super::polygon_frame::$checks::check_length(radius) {
+                    Ok(radius) => Ok(Self { inner, radius }),
+                    Err(e) => {
+                        // Dropped for nothing, as a `const fn` cannot run a
+                        // destructor: shapes have none.
+                        core::mem::forget(inner);
+                        Err(e)
+                    }
+                }
+            }
+        }
+    };
+}
+
+const_constructors!(f32, single);
+const_constructors!(f64, double);
+
 impl<R: Real, S: SupportMap<R>> SupportMap<R> for Rounded<R, S> {
     #[inline]
     fn support(&self, d: R::Vector) -> R::Vector {

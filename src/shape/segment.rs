@@ -41,6 +41,32 @@ impl<R: Real> Segment<R> {
     }
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty, $checks:ident) => {
+        impl Segment<$R> {
+            /// [`Segment::new`] as a `const fn`: a segment declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(a: $vector, b: $vector) -> Result<Self, Error> {
+                let start = V2 { x: a.x, y: a.y };
+                let end = V2 { x: b.x, y: b.y };
+                const_try!(super::polygon_frame::$checks::check_point(start));
+                const_try!(super::polygon_frame::$checks::check_point(end));
+                let delta = V2 { x: end.x - start.x, y: end.y - start.y };
+                if delta.x == 0.0 && delta.y == 0.0 {
+                    return Err(Error::ZeroLength);
+                }
+                Ok(Self { start, delta })
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2, single);
+const_constructors!(f64, glam::DVec2, double);
+
 impl<R: Real> SupportMap<R> for Segment<R> {
     #[inline]
     fn support(&self, direction: R::Vector) -> R::Vector {

@@ -1,6 +1,5 @@
 use super::SupportMap;
 use crate::real::{Real, V2};
-use crate::transform::check_length;
 use crate::Error;
 
 /// A circular sector (a pizza slice) with its apex on the local origin,
@@ -17,25 +16,7 @@ pub struct Slice<R: Real> {
 impl<R: Real> Slice<R> {
     /// A slice of `radius` (> 0) spanning `theta` radians, 0 < theta <= pi.
     pub fn new(radius: R, theta: R) -> Result<Self, Error> {
-        let radius = check_length(radius)?;
-        if !theta.is_finite() {
-            return Err(Error::NonFinite);
-        }
-        if theta <= R::ZERO || beyond_pi(theta) {
-            return Err(Error::AngleOutOfRange);
-        }
-        let half = theta * R::HALF;
-        let (s, c) = half.sin_cos();
-        // Centroid of a sector: 2 r sin(a) / (3 a) from the apex. sin(a)/a
-        // tends to 1; a subnormal theta can halve to exactly 0 (0/0).
-        let sinc = if half > R::ZERO { s / half } else { R::ONE };
-        let cx = R::TWO * radius * sinc / R::from_u32(3);
-        Ok(Self {
-            radius,
-            cos_half: c,
-            ends: [V2::new(radius * c, radius * s), V2::new(radius * c, -radius * s)],
-            centroid: V2::new(cx, R::ZERO),
-        })
+        R::slice(radius, theta)
     }
     pub fn slice_radius(&self) -> R {
         self.radius
@@ -79,15 +60,59 @@ impl<R: Real> SupportMap<R> for Slice<R> {
     }
 }
 
-/// Whether `theta` exceeds pi exactly, in `R` alone: converting `theta` to
-/// f64 would link soft double arithmetic into f32 firmware. pi rounds up to
-/// the nearest f32 and down to the nearest f64; the test against the
-/// rounded value follows the direction (a constant, folded at compile time).
-fn beyond_pi<R: Real>(theta: R) -> bool {
-    let pi = R::from_f64(core::f64::consts::PI);
-    if pi.to_f64() > core::f64::consts::PI {
-        theta >= pi
-    } else {
-        theta > pi
-    }
+/// How generic code reaches the per-type `const` constructor (through
+/// [`Real`]'s sealed supertrait): one definition of a slice, at compile time
+/// and at run time.
+pub trait SliceConst: Sized {
+    fn slice(radius: Self, theta: Self) -> Result<Slice<Self>, Error>
+    where
+        Self: Real;
 }
+
+/// The `const` constructor, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic), with a sine and cosine that are
+/// `const` too.
+macro_rules! const_constructors {
+    ($R:ty, $checks:ident, $sin_cos:path) => {
+        impl Slice<$R> {
+            /// [`Slice::new`] as a `const fn`: a slice declared as a constant
+            /// is checked when the program is compiled (an invalid one fails
+            /// the build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(radius: $R, theta: $R) -> Result<Self, Error> {
+                let radius = const_try!(super::polygon_frame::$checks::check_length(radius));
+                if !theta.is_finite() {
+                    return Err(Error::NonFinite);
+                }
+                // Beyond pi exactly, in the type alone: pi rounds up to the
+                // nearest f32 and down to the nearest f64.
+                let pi = core::f64::consts::PI as $R;
+                let beyond_pi = if pi as f64 > core::f64::consts::PI { theta >= pi } else { theta > pi };
+                if theta <= 0.0 || beyond_pi {
+                    return Err(Error::AngleOutOfRange);
+                }
+                let half = theta * 0.5;
+                let (s, c) = $sin_cos(half);
+                // Centroid of a sector: 2 r sin(a) / (3 a) from the apex.
+                // sin(a)/a tends to 1; a subnormal theta can halve to
+                // exactly 0 (0/0).
+                let sinc = if half > 0.0 { s / half } else { 1.0 };
+                let cx = 2.0 * radius * sinc / 3.0;
+                Ok(Self {
+                    radius,
+                    cos_half: c,
+                    ends: [V2 { x: radius * c, y: radius * s }, V2 { x: radius * c, y: -radius * s }],
+                    centroid: V2 { x: cx, y: 0.0 },
+                })
+            }
+        }
+
+        impl SliceConst for $R {
+            fn slice(radius: $R, theta: $R) -> Result<Slice<$R>, Error> {
+                Slice::<$R>::new_const(radius, theta)
+            }
+        }
+    };
+}
+
+const_constructors!(f32, single, crate::trig::sin_cos_f32);
+const_constructors!(f64, double, crate::trig::sin_cos_quarter_f64);

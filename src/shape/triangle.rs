@@ -17,6 +17,24 @@ impl<R: Real> Triangle<R> {
     }
 }
 
+/// The `const` constructors, for each scalar type (a `const fn` cannot be
+/// generic over [`Real`]'s arithmetic).
+macro_rules! const_constructors {
+    ($R:ty, $vector:ty) => {
+        impl Triangle<$R> {
+            /// [`Triangle::new`] as a `const fn`: a triangle declared as a constant is
+            /// checked when the program is compiled (an invalid one fails the
+            /// build) and stored bit for bit as `new` stores it.
+            pub const fn new_const(a: $vector, b: $vector, c: $vector) -> Result<Self, Error> {
+                Ok(Self(const_try!(Polygon::<$R, 3>::from_array([a, b, c]))))
+            }
+        }
+    };
+}
+
+const_constructors!(f32, glam::Vec2);
+const_constructors!(f64, glam::DVec2);
+
 impl<R: Real> SupportMap<R> for Triangle<R> {
     #[inline]
     fn support(&self, d: R::Vector) -> R::Vector {
