@@ -210,9 +210,9 @@ pub fn raycast<R: Io, S: SupportMap<R> + ?Sized>(gjk: &Gjk<R>, shape: &S, t: &Tr
 }
 
 /// Every shape kind, every query, through `&dyn SupportMap` (one copy of
-/// each query for all pairs, as a firmware with a shape enum would do).
+/// each query for all pairs, as a firmware with a shape enum would do), the
+/// shapes built at run time from the inputs.
 pub fn everything<R: Io>() {
-    let gjk = Gjk::<R>::new();
     let (r1, r2, w, h, angle) = (R::input(24), R::input(25), R::input(26), R::input(27), R::input(28));
     let a = Polygon::<R, 8>::new(&[vec::<R>(0), vec::<R>(2), vec::<R>(4), vec::<R>(6)]);
     let (Ok(polygon), Ok(circle), Ok(rect), Ok(tri), Ok(seg), Ok(cap), Ok(ell), Ok(half), Ok(slice), Ok(round)) = (
@@ -230,11 +230,84 @@ pub fn everything<R: Io>() {
         sink_u32(0xdead);
         return;
     };
-    let shapes: [&dyn SupportMap<R>; 10] = [polygon, &circle, &rect, &tri, &seg, &cap, &ell, &half, &slice, &round];
     let Ok(tb) = Transform::new(vec::<R>(16), angle) else {
         sink_u32(0xdead);
         return;
     };
+    every_query(&[polygon, &circle, &rect, &tri, &seg, &cap, &ell, &half, &slice, &round], &tb);
+}
+
+/// The same shapes as [`everything`], declared as constants (each shape's
+/// `const` constructor, checked when the firmware is compiled), as a
+/// firmware with fixed shapes keeps them: in flash, with no checks linked.
+/// B's placement comes from the inputs (`Transform::from_cos_sin`), as in
+/// the polygon rows.
+macro_rules! fixed_shapes {
+    ($R:ty, $V:ident) => {
+        pub fn everything_fixed() {
+            macro_rules! fixed {
+                ($e:expr) => {
+                    match $e {
+                        Ok(shape) => shape,
+                        Err(e) => panic!("{}", e.as_str()),
+                    }
+                };
+            }
+            use gjk2d::glam::$V;
+            static POLYGON: Polygon<$R, 4> = fixed!(Polygon::<$R, 4>::from_array([
+                $V::new(0.0, 0.0),
+                $V::new(1.0, 0.0),
+                $V::new(1.0, 1.0),
+                $V::new(0.0, 1.0)
+            ]));
+            static CIRCLE: Circle<$R> = fixed!(Circle::<$R>::at_const($V::new(0.0, 0.0), 0.5));
+            static RECTANGLE: Rectangle<$R> = fixed!(Rectangle::<$R>::new_const(2.0, 1.0));
+            static TRIANGLE: Triangle<$R> =
+                fixed!(Triangle::<$R>::new_const($V::new(0.0, 0.0), $V::new(1.0, 0.0), $V::new(1.0, 1.0)));
+            static SEGMENT: Segment<$R> = fixed!(Segment::<$R>::new_const($V::new(0.0, 0.0), $V::new(1.0, 1.0)));
+            static CAPSULE: Capsule<$R> = fixed!(Capsule::<$R>::new_const($V::new(0.0, 0.0), $V::new(1.0, 0.0), 0.25));
+            static ELLIPSE: Ellipse<$R> = fixed!(Ellipse::<$R>::new_const(2.0, 1.0));
+            static HALF_ELLIPSE: HalfEllipse<$R> = fixed!(HalfEllipse::<$R>::new_const(2.0, 1.0));
+            static SLICE: Slice<$R> = fixed!(Slice::<$R>::new_const(0.5, 1.2));
+            static ROUNDED: Rounded<$R, Rectangle<$R>> = fixed!(Rounded::<$R, _>::new_const(RECTANGLE, 0.25));
+            let Ok(tb) = Transform::from_cos_sin(vec::<$R>(16), <$R>::input(18), <$R>::input(19)) else {
+                sink_u32(0xdead);
+                return;
+            };
+            // Through `black_box`, so no query is specialised to the shapes.
+            every_query(
+                core::hint::black_box(&[
+                    &POLYGON,
+                    &CIRCLE,
+                    &RECTANGLE,
+                    &TRIANGLE,
+                    &SEGMENT,
+                    &CAPSULE,
+                    &ELLIPSE,
+                    &HALF_ELLIPSE,
+                    &SLICE,
+                    &ROUNDED,
+                ]),
+                &tb,
+            );
+        }
+    };
+}
+
+pub mod fixed_f32 {
+    use super::*;
+    fixed_shapes!(f32, Vec2);
+}
+
+pub mod fixed_f64 {
+    use super::*;
+    fixed_shapes!(f64, DVec2);
+}
+
+/// Every query on a pair picked by the inputs, B also cast against.
+#[inline(always)]
+fn every_query<R: Io>(shapes: &[&dyn SupportMap<R>; 10], tb: &Transform<R>) {
+    let gjk = Gjk::<R>::new();
     let pick = |x: R| {
         let (mut i, mut t) = (0usize, R::ONE);
         while t <= x && i < 9 {
@@ -244,8 +317,8 @@ pub fn everything<R: Io>() {
         shapes[i]
     };
     let (a, b) = (pick(R::input(30)), pick(R::input(31)));
-    intersects(&gjk, a, b, &tb);
-    distance(&gjk, a, b, &tb);
-    penetration(&gjk, a, b, &tb);
-    raycast(&gjk, b, &tb);
+    intersects(&gjk, a, b, tb);
+    distance(&gjk, a, b, tb);
+    penetration(&gjk, a, b, tb);
+    raycast(&gjk, b, tb);
 }

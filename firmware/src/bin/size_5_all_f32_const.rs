@@ -1,0 +1,13 @@
+//! Size firmware: every shape kind and every query, f32, the shapes
+//! declared as constants.
+#![no_std]
+#![no_main]
+
+#[path = "../size_common.rs"]
+mod common;
+
+#[cortex_m_rt::entry]
+fn main() -> ! {
+    common::fixed_f32::everything_fixed();
+    loop {}
+}
