@@ -5,7 +5,7 @@
 //! constructor is usable in a `const`.
 
 use gjk2d::glam::{DVec2, Vec2};
-use gjk2d::{Capsule, Circle, Ellipse, Error, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, Triangle};
+use gjk2d::{Capsule, Circle, Ellipse, Error, HalfEllipse, Rectangle, Rounded, Segment, Slice, Triangle};
 
 /// A `const` that must be valid: an invalid one fails the build.
 macro_rules! fixed {
@@ -118,7 +118,6 @@ fn both_agree_on_every_hard_input() {
                 above,
                 $R::MAX,
             ];
-            let mut checked = 0usize;
             for &a in scalars {
                 let p = $V::new(a, 0.5);
                 assert_same(&Circle::<$R>::new_const(a), &Circle::new(a), "circle");
@@ -137,10 +136,8 @@ fn both_agree_on_every_hard_input() {
                     assert_same(&Triangle::<$R>::new_const(p, q, r), &Triangle::new(p, q, r), "triangle");
                     let square = Rectangle::<$R>::new(1.0, 1.0).unwrap();
                     assert_same(&Rounded::<$R, _>::new_const(square, b), &Rounded::new(square, b), "rounded");
-                    checked += 1;
                 }
             }
-            assert_eq!(checked, scalars.len() * scalars.len());
         }};
     }
     check!(f32, Vec2, 1.0e15);
@@ -157,11 +154,4 @@ fn slices_agree_across_the_angle_range() {
         let t = t as f32;
         assert_same(&Slice::<f32>::new_const(1.5, t), &Slice::new(1.5, t), "f32 slice");
     }
-}
-
-/// A polygon of the `Triangle`'s constant is a polygon too.
-#[test]
-fn the_constant_triangle_is_a_polygon() {
-    let polygon: &Polygon<f32, 3> = single::TRIANGLE.polygon();
-    assert_eq!(polygon.len(), 3);
 }

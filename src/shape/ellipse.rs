@@ -48,7 +48,7 @@ pub(crate) fn ellipse_support<R: Real>(half: V2<R>, d: V2<R>) -> V2<R> {
 macro_rules! const_constructors {
     ($R:ty, $vector:ty, $checks:ident) => {
         impl Ellipse<$R> {
-            /// [`Ellipse::new`] as a `const fn`: a ellipse declared as a constant is
+            /// [`Ellipse::new`] as a `const fn`: an ellipse declared as a constant is
             /// checked when the program is compiled (an invalid one fails the
             /// build) and stored bit for bit as `new` stores it.
             pub const fn new_const(width: $R, height: $R) -> Result<Self, Error> {

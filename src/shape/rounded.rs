@@ -32,7 +32,7 @@ impl<R: Real, S: SupportMap<R>> Rounded<R, S> {
 macro_rules! const_constructors {
     ($R:ty, $checks:ident) => {
         impl<S: SupportMap<$R>> Rounded<$R, S> {
-            /// [`Rounded::new`] as a `const fn`: a rounded declared as a constant is
+            /// [`Rounded::new`] as a `const fn`: a rounded shape declared as a constant is
             /// checked when the program is compiled (an invalid one fails the
             /// build) and stored bit for bit as `new` stores it.
             pub const fn new_const(inner: S, radius: $R) -> Result<Self, Error> {

@@ -83,8 +83,11 @@ macro_rules! const_constructors {
                 if !theta.is_finite() {
                     return Err(Error::NonFinite);
                 }
-                // Beyond pi exactly, in the type alone: pi rounds up to the
-                // nearest f32 and down to the nearest f64.
+                // Beyond pi exactly, in the type alone (a run-time f64
+                // conversion of `theta` would link soft double arithmetic
+                // into f32 firmware): pi rounds up to the nearest f32 and
+                // down to the nearest f64, and the comparison follows the
+                // direction (constants, folded by the compiler).
                 let pi = core::f64::consts::PI as $R;
                 let beyond_pi = if pi as f64 > core::f64::consts::PI { theta >= pi } else { theta > pi };
                 if theta <= 0.0 || beyond_pi {
