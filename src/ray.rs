@@ -117,8 +117,11 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
 }
 
 /// Ray against the segment `a`-`a + delta` swept by `r` (> 0, as a
-/// [`Capsule`](crate::Capsule) has). The first hit on the union of the side
-/// band and the two end disks is the first hit of any of them. A bare
+/// [`Capsule`](crate::Capsule) has). Within the band of the two side lines,
+/// the capsule beyond an end of the core is that end's disk, and the other
+/// disk lies behind it; so the first hit is on the side the ray comes in
+/// through or, where it comes in beyond an end (or starts in the band), on
+/// that end's disk: one disk cast, not a comparison of three hits. A bare
 /// segment has its own cast ([`cast_ray_segment`]), so a firmware with
 /// capsules links no segment cast.
 pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
@@ -132,32 +135,26 @@ pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, 
     let length = len2.sqrt();
     let axis = delta * (R::ONE / length);
     let side = axis.perp();
-    let mut best: Option<(R, V2<R>)> = None;
-    let mut consider = |t: R, normal: V2<R>| {
-        if t >= R::ZERO && t <= max && best.is_none_or(|(bt, _)| t < bt) {
-            best = Some((t, normal));
-        }
-    };
-    // The two sides, lines parallel to the core at distance r.
+    // Height over the core's line, and where along the axis the ray is when
+    // it is in the band (its origin, if it starts there).
     let h = side.dot(rel);
-    let dn = side.dot(d);
-    let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
-    if toward * dn < R::ZERO {
+    let mut along = axis.dot(rel);
+    if h.abs() > r {
+        // Outside the band: it comes in through the nearer side line or not
+        // at all.
+        let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
+        let dn = side.dot(d);
+        if toward * dn >= R::ZERO {
+            return RayCast::closed_form(RayOutcome::Miss);
+        }
         let t = (h.abs() - r) / dn.abs();
-        let along = axis.dot(rel + d * t);
+        along = axis.dot(rel + d * t);
         if along >= R::ZERO && along <= length {
-            consider(t, side * toward);
+            let outcome = if t <= max { hit(o, d, t, side * toward) } else { RayOutcome::Miss };
+            return RayCast::closed_form(outcome);
         }
     }
-    for center in [a, a + delta] {
-        if let RayOutcome::Hit(hit) = cast_ray_disk(center, r, o, d, max).outcome {
-            consider(hit.distance, V2::from_glam(hit.normal));
-        }
-    }
-    RayCast::closed_form(match best {
-        Some((t, normal)) => hit(o, d, t, normal),
-        None => RayOutcome::Miss,
-    })
+    cast_ray_disk(if along < R::ZERO { a } else { a + delta }, r, o, d, max)
 }
 
 /// Ray against the bare segment `a`-`a + delta`. A segment has no inside, so
@@ -234,10 +231,9 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     let mut x = o;
     let mut normal = V2::zero();
     let mut v = x - V2::from_glam(shape.center());
-    // Shape points (not x - p), since x moves as the ray advances.
-    // Unused slots start as the origin: a zeroed array is a call to `memclr`.
-    let mut points: [V2<R>; 3] = [o, o, o];
-    let mut len = 0usize;
+    // Vertices x - p that keep their shape points p, measured again from
+    // each new x as the ray advances.
+    let mut simplex = Simplex::empty_like(vertex(o, o));
     let mut iterations = 0;
     let status = loop {
         if v.length_squared() <= tolerance * tolerance {
@@ -264,30 +260,13 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
             x = o + d * lambda;
             normal = v;
         }
-        // Keep at most two earlier points (the reduced simplex) and add p.
-        let keep = len.min(2);
-        if let Some(slot) = points.get_mut(keep) {
-            *slot = p;
-        }
-        len = keep + 1;
-        // Closest point of conv{x - p_i} to the origin, reducing the set.
-        let mut simplex: Simplex<R, Witness<R>> = Simplex::new(vertex(x, points[0]));
-        for &q in points.iter().take(len).skip(1) {
-            simplex.push(vertex(x, q));
-        }
-        match simplex.solve() {
-            Closest::Enclosed => {
-                v = V2::zero();
-            }
-            Closest::Point(closest) => {
-                v = closest;
-                len = 0;
-                for (slot, q) in points.iter_mut().zip(simplex.shape_points()) {
-                    *slot = q;
-                    len += 1;
-                }
-            }
-        }
+        // The reduced simplex (at most two points) and p, from x.
+        simplex.measure_from(x);
+        simplex.push(vertex(x, p));
+        v = match simplex.solve() {
+            Closest::Enclosed => V2::zero(),
+            Closest::Point(closest) => closest,
+        };
     };
     let outcome =
         if lambda == R::ZERO { RayOutcome::Inside } else { hit(o, d, lambda, normal.try_normalize().unwrap_or(-d)) };

@@ -95,6 +95,13 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         Self { verts: [first, free, free], len: 1 }
     }
 
+    /// No vertex yet, the slots holding copies of `filler`: all zeros
+    /// would be a call to `memclr` on bare metal (0.17 KB of flash).
+    pub fn empty_like(filler: Vertex<R, P>) -> Self {
+        let free = Vertex { id: NO_ID, ..filler };
+        Self { verts: [free, free, free], len: 0 }
+    }
+
     /// No vertex yet: for a loop whose one support call fills it.
     pub fn empty() -> Self {
         let none = Vertex { w: V2::zero(), id: NO_ID, payload: P::default() };
@@ -104,10 +111,6 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     /// All three slots and how many of them are vertices.
     pub fn slots(&self) -> (&[Vertex<R, P>; 3], usize) {
         (&self.verts, self.len)
-    }
-
-    pub fn vertices(&self) -> impl Iterator<Item = &Vertex<R, P>> {
-        self.verts.iter().take(self.len)
     }
 
     /// The ids of the vertices, [`NO_ID`] for empty slots (which always
@@ -229,9 +232,13 @@ impl<R: Real> Simplex<R, Witness<R>> {
         (pa, pb)
     }
 
-    /// The shape points of the vertices (the GJK ray cast keeps them).
-    pub fn shape_points(&self) -> impl Iterator<Item = V2<R>> + '_ {
-        self.vertices().map(|v| v.payload.b)
+    /// Measures every vertex again from `x`: the GJK ray cast's vertices
+    /// are `x - p` for shape points `p` (kept as `b`), and `x` moves along
+    /// the ray. The simplex is kept and re-measured rather than rebuilt.
+    pub fn measure_from(&mut self, x: V2<R>) {
+        for v in self.verts.iter_mut().take(self.len) {
+            v.w = x - v.payload.b;
+        }
     }
 }
 
