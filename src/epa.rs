@@ -356,7 +356,7 @@ fn finish_curved<R: Real, S: Storage<R>>(
     if !p.on_curve() && !q.on_curve() {
         return fallback;
     }
-    let slope = |u: V2<R>| support(u).w.dot(u.perp());
+    let slope = |u: V2<R>| support_along(support, u).1;
     // Bracket the root between the normals of two polytope edges: from the
     // closest edge's normal, walk edge by edge (at most 8) the way the slope
     // points until it changes sign. Consecutive normals are less than a half
@@ -416,12 +416,21 @@ fn finish_curved<R: Real, S: Storage<R>>(
         }
     }
     let u = direction((t0 + t1) * R::HALF);
-    let depth = support(u).w.dot(u);
+    let depth = support_along(support, u).0;
     iterations += 1;
     if depth > upper {
         return fallback;
     }
     estimate(u, depth, (depth - lower).max(R::ZERO), iterations, Status::Converged)
+}
+
+/// The support function `h(u)` along `u` and its slope `s(u) . perp(u)`:
+/// one out-of-line copy of the support call for every place the polish
+/// evaluates them (each inlined copy cost 0.13 KB of flash on the M4F).
+#[cfg_attr(target_os = "none", inline(never))]
+fn support_along<R: Real>(support: &impl Fn(V2<R>) -> Corner<R>, u: V2<R>) -> (R, R) {
+    let w = support(u).w;
+    (w.dot(u), w.dot(u.perp()))
 }
 
 /// The corner to drop from a full polytope: the first whose two edges,
