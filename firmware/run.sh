@@ -30,7 +30,6 @@ fail() { failures+=("$*"); echo "FAILED: $*"; }
 # reported under another (ENFORCE_BUDGETS=0 reports everything).
 BUDGET_RUSTC="1.95.0"
 KNOWN_MISSES=(
-  "flash budget: (5) every shape and query, f32 "
   "stack budget: f64 distance "
   "stack budget: f64 penetration "
   "stack budget: f64 raycast ellipse (GJK ray cast) "

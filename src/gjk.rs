@@ -180,14 +180,12 @@ where
     B: SupportMap<R> + ?Sized,
 {
     // How far apart the cores may be and still count as intersecting,
-    // squared: from the squared size when the shapes are sharp (polygons),
-    // so the test takes no square root at all.
-    let reach2 = if pair.radius() == R::ZERO {
-        detect_epsilon * detect_epsilon * pair.scale_squared()
-    } else {
-        let reach = pair.radius() + detect_epsilon * pair.scale();
-        reach * reach
-    };
+    // squared. The pair's size is asked for only with a margin: with the
+    // default (none) two polygons are tested with no square root, and a
+    // firmware that only tests polygons for overlap links none.
+    let margin = if detect_epsilon == R::ZERO { R::ZERO } else { detect_epsilon * pair.scale() };
+    let reach = pair.radius() + margin;
+    let reach2 = reach * reach;
     // The gap tolerance, for curved cores only (computed on first use).
     let mut tolerance = None;
     // One support call, at the top of the loop, for the first point too:
@@ -200,7 +198,7 @@ where
     let mut previous = R::INFINITY;
     let mut iterations = 0;
     loop {
-        let w = pair.support(direction);
+        let w = if Pair::<R, A, B>::shapes_known() { pair.support(direction) } else { pair.support_shared(direction) };
         iterations += 1;
         if iterations > 1 {
             // w . v / |v| is a lower bound: beyond `reach`, certainly apart.

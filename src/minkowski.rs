@@ -67,6 +67,9 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     pub first_direction: V2<R>,
     /// A's placement, for answers in world coordinates.
     frame: &'s Transform<R>,
+    /// Each shape's radius, asked once where the shapes are trait objects
+    /// (see [`radius`](Self::radius)).
+    radii: (R, R),
     reference_a: V2<R>,
     /// Each shape's last support id: where the next support starts looking.
     hint_a: Cell<u32>,
@@ -93,6 +96,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             first_direction: V2::zero(),
             frame: ta,
             reference_a,
+            radii: if Self::shapes_known() { (R::ZERO, R::ZERO) } else { (a.radius(), b.radius()) },
             hint_a: Cell::new(NO_ID),
             hint_b: Cell::new(NO_ID),
         };
@@ -115,15 +119,23 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// (square roots, closed forms) drops out of a firmware with polygons.
     #[inline(always)]
     pub fn radius(&self) -> R {
-        self.a.radius() + self.b.radius()
+        self.radius_a() + self.radius_b()
     }
     #[inline(always)]
     pub fn radius_a(&self) -> R {
-        self.a.radius()
+        if Self::shapes_known() {
+            self.a.radius()
+        } else {
+            self.radii.0
+        }
     }
     #[inline(always)]
     pub fn radius_b(&self) -> R {
-        self.b.radius()
+        if Self::shapes_known() {
+            self.b.radius()
+        } else {
+            self.radii.1
+        }
     }
 
     /// The pair's size: the larger bounding radius. Asked for where it is
@@ -133,11 +145,6 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[cfg_attr(target_os = "none", inline(never))]
     pub fn scale(&self) -> R {
         self.a.bounding_radius().max(self.b.bounding_radius())
-    }
-    /// The square of [`scale`](Self::scale), without a square root for
-    /// shapes that keep their radius squared.
-    pub fn scale_squared(&self) -> R {
-        self.a.bounding_radius_squared().max(self.b.bounding_radius_squared())
     }
 
     #[inline(always)]
@@ -174,11 +181,21 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.support(d)
     }
 
+    /// Whether both shapes' types are known when the program is compiled:
+    /// false for trait objects (`&dyn SupportMap`, a wide pointer), where
+    /// an inlined support call can drop nothing and one shared copy
+    /// ([`support_shared`](Self::support_shared)) is smaller.
+    #[inline(always)]
+    pub const fn shapes_known() -> bool {
+        let thin = core::mem::size_of::<&()>();
+        core::mem::size_of::<&A>() == thin && core::mem::size_of::<&B>() == thin
+    }
+
     /// The support point of B - A along `d`.
     #[inline(always)]
     pub fn support(&self, d: V2<R>) -> MinkowskiVertex<R> {
-        let (a, ia) = self.a.support_feature_near((-d).to_glam(), self.hint_a.get());
-        let (b, ib) = self.b.support_feature_near(self.inverse_rotate(d).to_glam(), self.hint_b.get());
+        let (a, ia) = self.a.support_feature((-d).to_glam(), self.hint_a.get());
+        let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam(), self.hint_b.get());
         self.hint_a.set(ia);
         self.hint_b.set(ib);
         let a = V2::from_glam(a);

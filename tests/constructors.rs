@@ -209,7 +209,7 @@ macro_rules! suite {
                                 .collect();
                             let c = p.centroid();
                             let r = p.reference_point();
-                            v.extend([c.x, c.y, r.x, r.y, p.bounding_radius_squared()].map(|x| x.to_bits() as u64));
+                            v.extend([c.x, c.y, r.x, r.y, p.bounding_radius()].map(|x| x.to_bits() as u64));
                             v
                         };
                         prop_assert_eq!(bits(a), bits(b));

@@ -2,7 +2,8 @@
 //! answer. Two checks, in f32 and f64:
 //! - every shape that claims a polytope core gives a vertex id for every
 //!   support direction (with and without a walking hint), and every curved
-//!   one gives `NO_FEATURE` somewhere, so no claim is wrong either way;
+//!   one gives `NO_FEATURE` somewhere, so no claim is wrong either way (and
+//!   the point, hinted or not, is as far along the direction as `support`);
 //! - penetration of polytope pairs is bit-identical with the claim hidden
 //!   behind a wrapper that keeps the default (false).
 
@@ -16,20 +17,14 @@ impl<R: Real> SupportMap<R> for Unclaimed<'_, R> {
     fn support(&self, d: R::Vector) -> R::Vector {
         self.0.support(d)
     }
-    fn support_feature(&self, d: R::Vector) -> (R::Vector, u32) {
-        self.0.support_feature(d)
-    }
-    fn support_feature_near(&self, d: R::Vector, previous: u32) -> (R::Vector, u32) {
-        self.0.support_feature_near(d, previous)
+    fn support_feature(&self, d: R::Vector, near: u32) -> (R::Vector, u32) {
+        self.0.support_feature(d, near)
     }
     fn center(&self) -> R::Vector {
         self.0.center()
     }
     fn bounding_radius(&self) -> R {
         self.0.bounding_radius()
-    }
-    fn bounding_radius_squared(&self) -> R {
-        self.0.bounding_radius_squared()
     }
     fn radius(&self) -> R {
         self.0.radius()
@@ -83,9 +78,13 @@ macro_rules! hint_suite {
                     let mut previous = NO_FEATURE;
                     let mut curve_seen = false;
                     for d in directions() {
-                        let (_, id) = shape.support_feature(d);
-                        let (_, near) = shape.support_feature_near(d, previous);
+                        let (cold, id) = shape.support_feature(d, NO_FEATURE);
+                        let (walked, near) = shape.support_feature(d, previous);
                         previous = near;
+                        // With or without the hint, a point as far along d
+                        // as `support`'s (ties may pick another vertex).
+                        let top = shape.support(d).dot(d);
+                        assert_eq!((cold.dot(d), walked.dot(d)), (top, top), "{name}");
                         curve_seen |= id == NO_FEATURE || near == NO_FEATURE;
                     }
                     assert_eq!(curve_seen, !polytope, "{name}: a support on a curve");

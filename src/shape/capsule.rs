@@ -71,8 +71,8 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
         self.core.support(direction)
     }
     #[inline]
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
-        self.core.support_feature(direction)
+    fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
+        self.core.support_feature(direction, near)
     }
     fn center(&self) -> R::Vector {
         self.core.center()

@@ -79,7 +79,7 @@ impl<R: Real> SupportMap<R> for Circle<R> {
         R::vector(R::ZERO, R::ZERO)
     }
     #[inline]
-    fn support_feature(&self, _direction: R::Vector) -> (R::Vector, u32) {
+    fn support_feature(&self, _direction: R::Vector, _near: u32) -> (R::Vector, u32) {
         (R::vector(R::ZERO, R::ZERO), 0)
     }
     fn center(&self) -> R::Vector {

@@ -55,12 +55,12 @@ const_constructors!(f64, glam::DVec2, double);
 impl<R: Real> SupportMap<R> for HalfEllipse<R> {
     #[inline]
     fn support(&self, d: R::Vector) -> R::Vector {
-        self.support_feature(d).0
+        self.support_feature(d, super::NO_FEATURE).0
     }
     // Out of line on bare metal: see the `shape` module.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline)]
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+    fn support_feature(&self, direction: R::Vector, _near: u32) -> (R::Vector, u32) {
         let d = V2::from_glam(direction);
         if d.y > R::ZERO {
             (ellipse_support(self.axes, d).to_glam(), super::NO_FEATURE)

@@ -7,9 +7,8 @@
 //! spend no iterations on it: they come out as exact as polygons.
 //!
 //! On bare-metal targets a shape's support code, where it is more than a
-//! few instructions, is one function out of line, which the trait's three
-//! support methods (`support`, `support_feature`, `support_feature_near`)
-//! call. Inlined, each method held its own copy, and a firmware that reaches
+//! few instructions, is one function out of line, which the trait's two
+//! support methods (`support`, `support_feature`) call. Inlined, each method held its own copy, and a firmware that reaches
 //! shapes through `dyn SupportMap` links every method of every shape: 1.0 KB
 //! of flash with every shape and query on the M4F. The call costs an
 //! ellipse's GJK ray cast 2% more instructions there (its distance query
@@ -80,14 +79,6 @@ pub trait SupportMap<R: Real> {
     /// shape, radius included. Relative tolerances are measured against it.
     fn bounding_radius(&self) -> R;
 
-    /// The square of [`bounding_radius`](Self::bounding_radius). A shape
-    /// that keeps it squared saves the intersection test a square root, and
-    /// a firmware that only tests polygons for overlap links none.
-    fn bounding_radius_squared(&self) -> R {
-        let r = self.bounding_radius();
-        r * r
-    }
-
     /// The radius the core is swept by. Zero for sharp shapes.
     fn radius(&self) -> R {
         R::ZERO
@@ -102,18 +93,18 @@ pub trait SupportMap<R: Real> {
     /// The support point and an id of the vertex it is, for cores that are
     /// polytopes; [`NO_FEATURE`] for a point on a curve. With ids, GJK and EPA
     /// stop exactly when a vertex repeats instead of on a tolerance.
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+    ///
+    /// `near` is the id this shape returned for the previous, nearby
+    /// direction ([`NO_FEATURE`] when there is none). GJK and EPA turn their
+    /// search direction a little at a time, so a polygon can walk from that
+    /// vertex to the new one (convexity makes the walk exact) instead of
+    /// scanning or searching all of them. Shapes without such a walk ignore
+    /// it, as the default does. One method, not one with the hint and one
+    /// without: through `dyn SupportMap` every method of every shape is
+    /// linked, and the second was dead weight in every vtable.
+    fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
+        let _ = near;
         (self.support(direction), NO_FEATURE)
-    }
-
-    /// [`support_feature`](Self::support_feature) given the id this shape
-    /// returned for the previous, nearby direction. GJK and EPA turn their
-    /// search direction a little at a time, so a polygon can walk from the
-    /// previous vertex to the new one (convexity makes the walk exact) instead
-    /// of scanning or searching all of them. The default ignores the hint.
-    fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
-        let _ = previous;
-        self.support_feature(direction)
     }
 
     /// Whether the core is a polytope: every [`support_feature`](Self::support_feature)
@@ -145,20 +136,14 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     fn bounding_radius(&self) -> R {
         (**self).bounding_radius()
     }
-    fn bounding_radius_squared(&self) -> R {
-        (**self).bounding_radius_squared()
-    }
     fn radius(&self) -> R {
         (**self).radius()
     }
     fn reference_point(&self) -> R::Vector {
         (**self).reference_point()
     }
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
-        (**self).support_feature(direction)
-    }
-    fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
-        (**self).support_feature_near(direction, previous)
+    fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
+        (**self).support_feature(direction, near)
     }
     fn is_polytope(&self) -> bool {
         (**self).is_polytope()

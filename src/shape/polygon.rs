@@ -21,8 +21,9 @@ pub struct Polygon<R: Real, const N: usize> {
     vertices: [V2<R>; N],
     len: usize,
     center: V2<R>,
-    /// Squared, so a firmware that only tests polygons for overlap links no
-    /// square root.
+    /// Squared: `from_array` computes it at compile time, where no square
+    /// root is available. Only queries that need the pair's size take the
+    /// root (the intersection test with the default zero margin does not).
     bounding_radius_squared: R,
 }
 
@@ -174,16 +175,11 @@ fn vertex_id<const N: usize>(i: usize) -> u32 {
 impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[inline]
     fn support(&self, direction: R::Vector) -> R::Vector {
-        self.support_feature(direction).0
+        polytope_support::<R, N>(self.vertices(), V2::from_glam(direction)).1.to_glam()
     }
     #[inline]
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
-        let (i, v) = polytope_support::<R, N>(self.vertices(), V2::from_glam(direction));
-        (v.to_glam(), vertex_id::<N>(i))
-    }
-    #[inline]
-    fn support_feature_near(&self, direction: R::Vector, previous: u32) -> (R::Vector, u32) {
-        let (i, v) = polytope_support_near::<R, N>(self.vertices(), V2::from_glam(direction), previous);
+    fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
+        let (i, v) = polytope_support_near::<R, N>(self.vertices(), V2::from_glam(direction), near);
         (v.to_glam(), vertex_id::<N>(i))
     }
     fn center(&self) -> R::Vector {
@@ -191,9 +187,6 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     fn bounding_radius(&self) -> R {
         self.bounding_radius_squared.sqrt()
-    }
-    fn bounding_radius_squared(&self) -> R {
-        self.bounding_radius_squared
     }
     fn reference_point(&self) -> R::Vector {
         self.reference.to_glam()

@@ -59,12 +59,8 @@ impl<R: Real, S: SupportMap<R>> SupportMap<R> for Rounded<R, S> {
         self.inner.support(d)
     }
     #[inline]
-    fn support_feature(&self, d: R::Vector) -> (R::Vector, u32) {
-        self.inner.support_feature(d)
-    }
-    #[inline]
-    fn support_feature_near(&self, d: R::Vector, previous: u32) -> (R::Vector, u32) {
-        self.inner.support_feature_near(d, previous)
+    fn support_feature(&self, d: R::Vector, near: u32) -> (R::Vector, u32) {
+        self.inner.support_feature(d, near)
     }
     fn center(&self) -> R::Vector {
         self.inner.center()

@@ -31,7 +31,10 @@ impl<R: Real> Segment<R> {
     pub fn length(&self) -> R {
         self.delta.length()
     }
-    #[inline]
+    /// Out of line on bare metal: the segment's and the capsule's support
+    /// methods share it (see the `shape` module).
+    #[cfg_attr(target_os = "none", inline(never))]
+    #[cfg_attr(not(target_os = "none"), inline)]
     pub(crate) fn support_local(&self, d: V2<R>) -> (V2<R>, u32) {
         if self.delta.dot(d) > R::ZERO {
             (self.delta, 1)
@@ -73,7 +76,7 @@ impl<R: Real> SupportMap<R> for Segment<R> {
         self.support_local(V2::from_glam(direction)).0.to_glam()
     }
     #[inline]
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+    fn support_feature(&self, direction: R::Vector, _near: u32) -> (R::Vector, u32) {
         let (p, id) = self.support_local(V2::from_glam(direction));
         (p.to_glam(), id)
     }

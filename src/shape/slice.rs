@@ -30,12 +30,12 @@ impl<R: Real> Slice<R> {
 impl<R: Real> SupportMap<R> for Slice<R> {
     #[inline]
     fn support(&self, d: R::Vector) -> R::Vector {
-        self.support_feature(d).0
+        self.support_feature(d, super::NO_FEATURE).0
     }
     // Out of line on bare metal: see the `shape` module.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline)]
-    fn support_feature(&self, direction: R::Vector) -> (R::Vector, u32) {
+    fn support_feature(&self, direction: R::Vector, _near: u32) -> (R::Vector, u32) {
         let d = V2::from_glam(direction);
         if let Some(u) = d.try_normalize() {
             if u.x >= self.cos_half {

@@ -41,12 +41,8 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
         self.0.support(d)
     }
     #[inline]
-    fn support_feature(&self, d: R::Vector) -> (R::Vector, u32) {
-        self.0.support_feature(d)
-    }
-    #[inline]
-    fn support_feature_near(&self, d: R::Vector, previous: u32) -> (R::Vector, u32) {
-        self.0.support_feature_near(d, previous)
+    fn support_feature(&self, d: R::Vector, near: u32) -> (R::Vector, u32) {
+        self.0.support_feature(d, near)
     }
     fn is_polytope(&self) -> bool {
         true
