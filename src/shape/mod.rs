@@ -8,11 +8,15 @@
 //!
 //! On bare-metal targets a shape's support code, where it is more than a
 //! few instructions, is one function out of line, which the trait's two
-//! support methods (`support`, `support_feature`) call. Inlined, each method held its own copy, and a firmware that reaches
-//! shapes through `dyn SupportMap` links every method of every shape: 1.0 KB
-//! of flash with every shape and query on the M4F. The call costs an
-//! ellipse's GJK ray cast 2% more instructions there (its distance query
-//! measured 5% fewer). Hosts inline it for speed.
+//! support methods (`support`, `support_feature`) call. Inlined, each
+//! method held its own copy, and a firmware that reaches shapes through
+//! `dyn SupportMap` links every method of every shape: 1.0 KB of flash
+//! with every shape and query on the M4F (when there were three support
+//! methods). The call costs an ellipse's GJK ray cast 2% more instructions
+//! there (its distance query measured 5% fewer). Hosts inline it for speed.
+//!
+//! The trait has no method that no query calls through `dyn`: each one is
+//! a function per shape in every firmware that uses trait objects.
 
 /// `?` for `const fn`s, where the operator is not available.
 macro_rules! const_try {

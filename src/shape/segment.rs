@@ -31,10 +31,7 @@ impl<R: Real> Segment<R> {
     pub fn length(&self) -> R {
         self.delta.length()
     }
-    /// Out of line on bare metal: the segment's and the capsule's support
-    /// methods share it (see the `shape` module).
-    #[cfg_attr(target_os = "none", inline(never))]
-    #[cfg_attr(not(target_os = "none"), inline)]
+    #[inline]
     pub(crate) fn support_local(&self, d: V2<R>) -> (V2<R>, u32) {
         if self.delta.dot(d) > R::ZERO {
             (self.delta, 1)
