@@ -188,19 +188,21 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
+    // Asked once: through `dyn SupportMap` each ask is two calls.
+    let radius = pair.radius();
     // A closest point too small to give a direction is touching.
     let (distance, normal) = core
         .simplex
         .distance_and_normal(core.v, pair.centers)
         .unwrap_or_else(|| (R::ZERO, pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))));
     let error_bound = (distance - core.lower_bound).max(R::ZERO);
-    let certain = core.status.is_converged() || core.lower_bound > pair.radius();
-    if distance > pair.radius() && certain {
+    let certain = core.status.is_converged() || core.lower_bound > radius;
+    if distance > radius && certain {
         return None;
     }
     Some(Penetration {
         normal: pair.to_world_vector(normal),
-        depth: (pair.radius() - distance).max(R::ZERO),
+        depth: (radius - distance).max(R::ZERO),
         error_bound,
         iterations: core.iterations,
         status: core.status,
@@ -214,18 +216,20 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let (core_distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers)?;
+    // Each radius asked once: through `dyn SupportMap` each ask is a call.
+    let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
+    let radius = radius_a + radius_b;
     // `core_distance` is an upper bound: within the radii, certainly touching.
-    if core_distance <= pair.radius() {
+    if core_distance <= radius {
         return None;
     }
     let (a, b) = core.simplex.witness_points();
     // Only where there is a radius: for polygons the compiler then sees
     // there is nothing to add (`p + n * 0.0` is not `p` to it).
-    let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
     let a = if radius_a > R::ZERO { a + normal * radius_a } else { a };
     let b = if radius_b > R::ZERO { b - normal * radius_b } else { b };
     Some(Separation {
-        distance: (core_distance - pair.radius()).max(R::ZERO),
+        distance: (core_distance - radius).max(R::ZERO),
         normal: pair.to_world_vector(normal),
         point_a: pair.to_world_point(a),
         point_b: pair.to_world_point(b),

@@ -67,9 +67,6 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     pub first_direction: V2<R>,
     /// A's placement, for answers in world coordinates.
     frame: &'s Transform<R>,
-    /// Each shape's radius, asked once where the shapes are trait objects
-    /// (see [`radius`](Self::radius)).
-    radii: (R, R),
     reference_a: V2<R>,
     /// Each shape's last support id: where the next support starts looking.
     hint_a: Cell<u32>,
@@ -96,7 +93,6 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             first_direction: V2::zero(),
             frame: ta,
             reference_a,
-            radii: if Self::shapes_known() { (R::ZERO, R::ZERO) } else { (a.radius(), b.radius()) },
             hint_a: Cell::new(NO_ID),
             hint_b: Cell::new(NO_ID),
         };
@@ -119,23 +115,15 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// (square roots, closed forms) drops out of a firmware with polygons.
     #[inline(always)]
     pub fn radius(&self) -> R {
-        self.radius_a() + self.radius_b()
+        self.a.radius() + self.b.radius()
     }
     #[inline(always)]
     pub fn radius_a(&self) -> R {
-        if Self::shapes_known() {
-            self.a.radius()
-        } else {
-            self.radii.0
-        }
+        self.a.radius()
     }
     #[inline(always)]
     pub fn radius_b(&self) -> R {
-        if Self::shapes_known() {
-            self.b.radius()
-        } else {
-            self.radii.1
-        }
+        self.b.radius()
     }
 
     /// The pair's size: the larger bounding radius. Asked for where it is
