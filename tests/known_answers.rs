@@ -196,6 +196,42 @@ macro_rules! known_answer_suite {
                 assert_eq!(checked, 81 * ANGLES.len());
             }
 
+            /// With a detect margin, shapes count as intersecting up to
+            /// `epsilon` times the pair's size (the larger bounding radius)
+            /// apart: a gap a tenth inside the margin intersects, a tenth
+            /// outside does not; with the default (no margin) a gap of a
+            /// millionth of the size does not either. Sharp pairs take the
+            /// margin alone, rounded and curved ones add it to their radii.
+            #[test]
+            fn detect_margin_every_pair() {
+                let epsilon = 0.01 as R;
+                let mut config = GjkConfig::<R>::default();
+                config.set_detect_epsilon(epsilon).unwrap();
+                let with_margin = Gjk::with_solver(config, Epa::default());
+                let without = Gjk::<R>::new();
+                let mut checked = 0;
+                for a in cases() {
+                    for b in cases() {
+                        let margin = epsilon * a.shape.bounding_radius().max(b.shape.bounding_radius());
+                        for &angle in ANGLES.iter() {
+                            let what = format!("{} vs {} at angle {angle}", a.name, b.name);
+                            let ta = place(angle, a.turn, 0.0);
+                            let test = |gjk: &Gjk<R>, gap: R| {
+                                let tb = place(angle, b.turn, a.right + gap + b.left);
+                                let det = gjk.intersects(&*a.shape, &ta, &*b.shape, &tb);
+                                assert!(det.status.is_converged(), "{what}, gap {gap}: {det:?}");
+                                det.intersecting
+                            };
+                            assert!(test(&with_margin, 0.9 * margin), "{what}: a gap inside the margin");
+                            assert!(!test(&with_margin, 1.1 * margin), "{what}: a gap beyond the margin");
+                            assert!(!test(&without, 1e-6 * margin / epsilon), "{what}: a gap with no margin");
+                            checked += 1;
+                        }
+                    }
+                }
+                assert_eq!(checked, 81 * ANGLES.len());
+            }
+
             #[test]
             fn penetration_every_shape_into_a_block() {
                 let gjk = Gjk::<R>::new();
