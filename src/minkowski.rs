@@ -160,9 +160,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// several places (distance, EPA): one out-of-line copy on bare-metal
     /// targets, where each inlined copy costs flash (0.8 KB in a firmware with
     /// EPA on two polygons on the M4F, 1.7 KB with every shape and query). The
-    /// intersection test keeps the inlined one:
-    /// there the compiler sees that a polygon's ids are never [`NO_ID`] and
-    /// drops the code for curved shapes.
+    /// intersection test keeps the inlined one where the shapes' types are
+    /// known ([`shapes_known`](Self::shapes_known)): there the compiler sees
+    /// that a polygon's ids are never [`NO_ID`] and drops the code for curved
+    /// shapes.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn support_shared(&self, d: V2<R>) -> MinkowskiVertex<R> {

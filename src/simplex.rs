@@ -104,8 +104,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
 
     /// No vertex yet: for a loop whose one support call fills it.
     pub fn empty() -> Self {
-        let none = Vertex { w: V2::zero(), id: NO_ID, payload: P::default() };
-        Self { verts: [none, none, none], len: 0 }
+        Self::empty_like(Vertex { w: V2::zero(), id: NO_ID, payload: P::default() })
     }
 
     /// All three slots and how many of them are vertices.
