@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# gjk2d on Cortex-M, under QEMU: known-answer tests on two boards, the golden
-# determinism hash (host = M4F = M3), instructions and stack per query, flash
-# budgets and the no-panic link check. Writes size-table.md, icount.md and
+# gjk2d on microcontrollers, under QEMU: known-answer tests on three boards
+# (Cortex-M4F, Cortex-M3 running thumbv6m code, RISC-V riscv32imac), the
+# golden determinism hash (host = M4F = M3 = RISC-V), instructions and stack
+# per query, flash budgets and the no-panic link check. Writes size-table.md, icount.md and
 # stack.md beside this script. Exits non-zero on any failure.
 #
 #   bash firmware/run.sh
 #
-# Needs qemu-system-arm on PATH (Debian: apt-get install qemu-system-arm, or
-# firmware/get-qemu.sh where apt cannot install it). Installs nothing itself
+# Needs qemu-system-arm and qemu-system-riscv32 on PATH (Debian: apt-get
+# install qemu-system-arm qemu-system-misc, or firmware/get-qemu.sh where apt
+# cannot install them). Installs nothing itself
 # but rustup components and targets.
 #
 # ALLOW_PANIC_PATHS=1 reports surviving panic paths without failing.
@@ -53,8 +55,9 @@ step() { printf '\n--- %s ---\n' "$*"; }
 
 M4=thumbv7em-none-eabihf
 M0=thumbv6m-none-eabi
+RV=riscv32imac-unknown-none-elf
 rustup component add llvm-tools >/dev/null 2>&1 || rustup component add llvm-tools
-rustup target add "$M4" "$M0" >/dev/null 2>&1 || rustup target add "$M4" "$M0"
+rustup target add "$M4" "$M0" "$RV" >/dev/null 2>&1 || rustup target add "$M4" "$M0" "$RV"
 HOST="$(rustc -vV | sed -n 's/^host: //p')"
 RUSTC_VERSION="$(rustc -vV | sed -n 's/^release: //p')"
 case "${ENFORCE_BUDGETS:-}" in
@@ -65,21 +68,29 @@ esac
 LLVM_BIN="$(rustc --print sysroot)/lib/rustlib/$HOST/bin"
 SIZE="$LLVM_BIN/llvm-size"
 OBJDUMP="$LLVM_BIN/llvm-objdump"
-command -v qemu-system-arm >/dev/null || {
-  echo "qemu-system-arm not found: apt-get install -y --no-install-recommends qemu-system-arm" >&2
-  echo "(or: bash firmware/get-qemu.sh && export PATH=\$HOME/.cache/gjk2d-qemu/bin:\$PATH)" >&2
-  exit 2
+for emulator in qemu-system-arm qemu-system-riscv32; do
+  command -v "$emulator" >/dev/null || {
+    echo "$emulator not found: apt-get install -y --no-install-recommends qemu-system-arm qemu-system-misc" >&2
+    echo "(or: bash firmware/get-qemu.sh && export PATH=\$HOME/.cache/gjk2d-qemu/bin:\$PATH)" >&2
+    exit 2
+  }
+done
+board() {
+  case "$1" in
+    "$M4") echo "mps2-an386 (Cortex-M4F)" ;;
+    "$M0") echo "mps2-an385 (Cortex-M3, thumbv6m code)" ;;
+    "$RV") echo "virt (RISC-V, riscv32imac: no FPU)" ;;
+  esac
 }
-board() { case "$1" in "$M4") echo "mps2-an386 (Cortex-M4F)" ;; "$M0") echo "mps2-an385 (Cortex-M3, thumbv6m code)" ;; esac; }
 out="$CARGO_TARGET_DIR/run"
 mkdir -p "$out"
 
 # ---------------------------------------------------------------- tests
 expected_hash="$(tr -d ' \n' <"$ROOT/tests/golden_hash.txt")"
-for target in "$M4" "$M0"; do
+for target in "$M4" "$M0" "$RV"; do
   step "known-answer tests and golden hash on $(board "$target")"
   cargo build --release --bin kat --target "$target" -q
-  # The runner in .cargo/config.toml: timeout + qemu-system-arm.
+  # The runner in .cargo/config.toml: timeout + qemu-system-arm or -riscv32.
   if cargo run --release --bin kat --target "$target" -q >"$out/kat-$target.txt" 2>&1; then
     grep -v '^golden' "$out/kat-$target.txt" | tail -n 20
   else

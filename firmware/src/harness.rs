@@ -1,6 +1,6 @@
 //! Counts checks and prints the failures (and, at the end, the tally).
 
-use cortex_m_semihosting::hprintln;
+use crate::hprintln;
 use gjk2d::Real;
 
 pub struct Tally {

@@ -4,10 +4,13 @@
 #![no_std]
 #![no_main]
 
+#[cfg(target_arch = "arm")]
 use cortex_m_rt::entry;
-use cortex_m_semihosting::{debug, hprintln};
-use gjk2d_firmware::{golden, harness::Tally, kat};
+use gjk2d_firmware::{debug, golden, harness::Tally, hprintln, kat};
+#[cfg(target_arch = "arm")]
 use panic_semihosting as _;
+#[cfg(target_arch = "riscv32")]
+use riscv_rt::entry;
 
 #[entry]
 fn main() -> ! {
