@@ -174,8 +174,10 @@ SIZE_BINS="size_0_empty size_1_intersect_const size_1_intersect size_2_distance_
 declare -A TEXT FLASH PANIC
 panic_report="$out/panic-paths.txt"
 : >"$panic_report"
-for target in "$M4" "$M0"; do
+for target in "$M4" "$M0" "$RV"; do
   step "size firmwares and the no-panic link check, $target"
+  link_scripts="-C link-arg=-Tlink.x"
+  [ "$target" = "$RV" ] && link_scripts="-C link-arg=-Tmemory-riscv.x $link_scripts"
   for bin in $SIZE_BINS; do
     elf="$CARGO_TARGET_DIR/$target/release/$bin"
     if cargo build --release --bin "$bin" --target "$target" -q >"$out/build-$bin-$target.txt" 2>&1; then
@@ -188,7 +190,7 @@ for target in "$M4" "$M0"; do
       fi
       PANIC[$bin.$target]=yes
       # Link again with the symbol defined, to measure and to name the callers.
-      RUSTFLAGS="-C link-arg=-Tlink.x -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
+      RUSTFLAGS="$link_scripts -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
         CARGO_TARGET_DIR="$FW/target/panic-diag" cargo build --release --bin "$bin" --target "$target" -q
       elf="$FW/target/panic-diag/$target/release/$bin"
       {
@@ -199,7 +201,9 @@ for target in "$M4" "$M0"; do
     fi
     sizes="$("$SIZE" -A "$elf")"
     text=$(awk '$1==".text"{print $2}' <<<"$sizes")
-    flash=$(awk '$1==".vector_table"||$1==".text"||$1==".rodata"||$1==".data"{s+=$2} END{print s}' <<<"$sizes")
+    # Everything stored in flash (riscv-rt adds its start code, .init.rust,
+    # and keeps the unwind tables, .eh_frame).
+    flash=$(awk '$1==".vector_table"||$1==".text"||$1==".init.rust"||$1==".rodata"||$1==".eh_frame"||$1==".data"{s+=$2} END{print s}' <<<"$sizes")
     TEXT[$bin.$target]=$text
     FLASH[$bin.$target]=$flash
   done
@@ -234,11 +238,11 @@ declare -A LABEL=(
 )
 kb() { awk -v b="$1" 'BEGIN{printf "%.2f KB", b/1024}'; }
 {
-  echo "| firmware | thumbv7em .text | thumbv7em flash | budget (.text) | thumbv6m .text | thumbv6m flash |"
-  echo "| --- | ---: | ---: | ---: | ---: | ---: |"
+  echo "| firmware | thumbv7em .text | thumbv7em flash | budget (.text) | thumbv6m .text | thumbv6m flash | riscv32imac .text | riscv32imac flash |"
+  echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
   for bin in $SIZE_BINS; do
     row="| ${LABEL[$bin]}"
-    for target in "$M4" "$M0"; do
+    for target in "$M4" "$M0" "$RV"; do
       t=${TEXT[$bin.$target]:-0}
       f=${FLASH[$bin.$target]:-0}
       if [ "$bin" = size_0_empty ]; then
@@ -257,8 +261,9 @@ kb() { awk -v b="$1" 'BEGIN{printf "%.2f KB", b/1024}'; }
     echo "$row |"
   done
   echo
-  echo "Growth over the empty cortex-m-rt firmware, release profile with \`opt-level = \"s\"\`, \`lto = true\`,"
-  echo "\`codegen-units = 1\`, \`panic = \"abort\"\`. Flash = .vector_table + .text + .rodata + .data. Inputs come from"
+  echo "Growth over the empty firmware (cortex-m-rt, or riscv-rt on RISC-V), release profile with \`opt-level = \"s\"\`, \`lto = true\`,"
+  echo "\`codegen-units = 1\`, \`panic = \"abort\"\`. Flash = .vector_table + .text + .rodata + .data (on RISC-V also"
+  echo "riscv-rt's .init.rust and the unwind tables, .eh_frame, which its linker script keeps). Inputs come from"
   echo "volatile statics and every output goes to one, so nothing is constant-folded away. (1) to (4) test two"
   echo "unit squares, B placed by \`Transform::from_cos_sin\` from inputs. The squares are constants"
   echo "(\`Polygon::<f32, 4>::from_array\`, checked by the compiler, read through \`black_box\`), or, in the rows"
@@ -267,7 +272,7 @@ kb() { awk -v b="$1" 'BEGIN{printf "%.2f KB", b/1024}'; }
   echo "Its shapes are constants (each shape's \`const\` constructor: \`Circle::new_const\`, ..., checked by the"
   echo "compiler), B placed by \`Transform::from_cos_sin\`; or, in the rows \"shapes built at run time\", built"
   echo "with \`new\` from inputs and placed by \`Transform::new\` (sin, cos), which adds every shape's checks and"
-  echo "the sine. On thumbv6m (Cortex-M0/M0+/M3 code) f32 is soft-float."
+  echo "the sine. On thumbv6m (Cortex-M0/M0+/M3 code) and riscv32imac (no F extension) f32 is soft-float."
 } >"$FW/size-table.md"
 step "flash"
 cat "$FW/size-table.md"

@@ -12,6 +12,13 @@ use gjk2d::{
     SupportMap, Transform, Triangle,
 };
 
+/// The runtime's entry attribute: the same firmwares build for Cortex-M and
+/// RISC-V.
+#[cfg(target_arch = "arm")]
+pub use cortex_m_rt::entry;
+#[cfg(target_arch = "riscv32")]
+pub use riscv_rt::entry;
+
 #[panic_handler]
 fn panic(_: &PanicInfo) -> ! {
     extern "C" {
@@ -137,7 +144,7 @@ pub fn with_const_polygons(f: impl FnOnce(&Polygon<f32, 4>, &Polygon<f32, 4>, &T
 #[allow(unused_macros)] // not by the empty and the every-shape firmwares
 macro_rules! polygon_firmware {
     ($polygons:expr => $($query:ident),+) => {
-        #[cortex_m_rt::entry]
+        #[common::entry]
         fn main() -> ! {
             let gjk = gjk2d::Gjk::<f32>::new();
             $polygons(|a, b, tb| {

@@ -5,7 +5,7 @@
 #[path = "../size_common.rs"]
 mod common;
 
-#[cortex_m_rt::entry]
+#[common::entry]
 fn main() -> ! {
     common::baseline();
     loop {}

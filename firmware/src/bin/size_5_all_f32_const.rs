@@ -6,7 +6,7 @@
 #[path = "../size_common.rs"]
 mod common;
 
-#[cortex_m_rt::entry]
+#[common::entry]
 fn main() -> ! {
     common::fixed_f32::everything_fixed();
     loop {}
