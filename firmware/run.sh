@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# gjk2d on microcontrollers, under QEMU: known-answer tests on three boards
-# (Cortex-M4F, Cortex-M3 running thumbv6m code, RISC-V riscv32imac), the
-# golden determinism hash (host = M4F = M3 = RISC-V), instructions and stack
-# per query, flash budgets and the no-panic link check. Writes size-table.md, icount.md and
+# gjk2d on microcontrollers, under QEMU: known-answer tests on five targets
+# (Cortex-M4F, Cortex-M3 running thumbv6m code, Cortex-M33, RISC-V
+# riscv32imac and riscv32imafc), the golden determinism hash (the host's on
+# every one), instructions and stack per query, flash budgets and the
+# no-panic link check. Writes size-table.md, icount.md and
 # stack.md beside this script. Exits non-zero on any failure.
 #
 #   bash firmware/run.sh
@@ -55,9 +56,11 @@ step() { printf '\n--- %s ---\n' "$*"; }
 
 M4=thumbv7em-none-eabihf
 M0=thumbv6m-none-eabi
+M33=thumbv8m.main-none-eabihf
 RV=riscv32imac-unknown-none-elf
+RVF=riscv32imafc-unknown-none-elf
 rustup component add llvm-tools >/dev/null 2>&1 || rustup component add llvm-tools
-rustup target add "$M4" "$M0" "$RV" >/dev/null 2>&1 || rustup target add "$M4" "$M0" "$RV"
+rustup target add "$M4" "$M0" "$M33" "$RV" "$RVF" >/dev/null 2>&1 || rustup target add "$M4" "$M0" "$M33" "$RV" "$RVF"
 HOST="$(rustc -vV | sed -n 's/^host: //p')"
 RUSTC_VERSION="$(rustc -vV | sed -n 's/^release: //p')"
 case "${ENFORCE_BUDGETS:-}" in
@@ -79,7 +82,9 @@ board() {
   case "$1" in
     "$M4") echo "mps2-an386 (Cortex-M4F)" ;;
     "$M0") echo "mps2-an385 (Cortex-M3, thumbv6m code)" ;;
+    "$M33") echo "mps2-an505 (Cortex-M33)" ;;
     "$RV") echo "virt (RISC-V, riscv32imac: no FPU)" ;;
+    "$RVF") echo "virt (RISC-V, riscv32imafc: f32 in hardware)" ;;
   esac
 }
 out="$CARGO_TARGET_DIR/run"
@@ -87,7 +92,7 @@ mkdir -p "$out"
 
 # ---------------------------------------------------------------- tests
 expected_hash="$(tr -d ' \n' <"$ROOT/tests/golden_hash.txt")"
-for target in "$M4" "$M0" "$RV"; do
+for target in "$M4" "$M0" "$M33" "$RV" "$RVF"; do
   step "known-answer tests and golden hash on $(board "$target")"
   cargo build --release --bin kat --target "$target" -q
   # The runner in .cargo/config.toml: timeout + qemu-system-arm or -riscv32.
@@ -176,8 +181,6 @@ panic_report="$out/panic-paths.txt"
 : >"$panic_report"
 for target in "$M4" "$M0" "$RV"; do
   step "size firmwares and the no-panic link check, $target"
-  link_scripts="-C link-arg=-Tlink.x"
-  [ "$target" = "$RV" ] && link_scripts="-C link-arg=-Tmemory-riscv.x $link_scripts"
   for bin in $SIZE_BINS; do
     elf="$CARGO_TARGET_DIR/$target/release/$bin"
     if cargo build --release --bin "$bin" --target "$target" -q >"$out/build-$bin-$target.txt" 2>&1; then
@@ -190,7 +193,7 @@ for target in "$M4" "$M0" "$RV"; do
       fi
       PANIC[$bin.$target]=yes
       # Link again with the symbol defined, to measure and to name the callers.
-      RUSTFLAGS="$link_scripts -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
+      RUSTFLAGS="-C link-arg=-Tlink.x -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
         CARGO_TARGET_DIR="$FW/target/panic-diag" cargo build --release --bin "$bin" --target "$target" -q
       elf="$FW/target/panic-diag/$target/release/$bin"
       {
