@@ -12,7 +12,8 @@
 set -euo pipefail
 PREFIX="${1:-$HOME/.cache/gjk2d-qemu}"
 works() { [ -x "$PREFIX/bin/$1" ] && "$PREFIX/bin/$1" --version >/dev/null 2>&1; }
-# The libraries both emulators link that a minimal Debian 12 lacks.
+# What both emulators need that a minimal Debian 12 lacks: QEMU's shared
+# files and the libraries they link.
 COMMON="qemu-system-common qemu-system-data libcapstone4 libfdt1 libslirp0
   libpmem1 libdaxctl1 libndctl6 libibverbs1 librdmacm1 libnl-3-200 libnl-route-3-200
   libspice-server1 libusb-1.0-0 libusbredirparser1 libvdeplug2 libbrlapi0.8 libcacard0

@@ -13,7 +13,8 @@ use gjk2d::{
 };
 
 /// The runtime's entry attribute: the same firmwares build for Cortex-M and
-/// RISC-V.
+/// RISC-V. (Not the library's re-export: linking the library would bring its
+/// RISC-V panic handler beside this one.)
 #[cfg(target_arch = "arm")]
 pub use cortex_m_rt::entry;
 #[cfg(target_arch = "riscv32")]

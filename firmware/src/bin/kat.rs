@@ -4,13 +4,9 @@
 #![no_std]
 #![no_main]
 
-#[cfg(target_arch = "arm")]
-use cortex_m_rt::entry;
-use gjk2d_firmware::{debug, golden, harness::Tally, hprintln, kat};
+use gjk2d_firmware::{debug, entry, golden, harness::Tally, hprintln, kat};
 #[cfg(target_arch = "arm")]
 use panic_semihosting as _;
-#[cfg(target_arch = "riscv32")]
-use riscv_rt::entry;
 
 #[entry]
 fn main() -> ! {
