@@ -1,11 +1,13 @@
 //! Penetration depth of overlapping cores: the pluggable solver trait and
 //! EPA, the default, on a fixed-capacity polytope.
 //!
-//! The polytope is a convex polygon inside the Minkowski difference that
-//! contains the origin. Its closest edge gives a *lower* bound of the depth;
-//! the support along that edge's normal an *upper* bound. EPA pushes the
-//! closest edge out until the bounds meet: exactly when a support vertex
-//! repeats (polytopes), or within `epsilon * size` (curved cores).
+//! The polytope is a polygon inside the Minkowski difference that winds
+//! once around the origin. Each edge bounds from below how far the
+//! difference's boundary is within the edge's cone from the origin, so the
+//! closest edge gives a *lower* bound of the depth; the support along that
+//! edge's normal an *upper* bound. EPA pushes the closest edge out until the
+//! bounds meet: exactly when a support vertex repeats (polytopes), or within
+//! `epsilon * size` (curved cores).
 
 use crate::config::EpaConfig;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
@@ -291,7 +293,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             // Full: `new` takes the place of a corner that no longer matters,
             // moved to where it belongs (the corners between shift by one).
             let items = polytope.items_mut();
-            let Some(k) = prune(items, i, upper, curved) else {
+            let Some(k) = prune(items, upper - tolerance, curved) else {
                 break (i, lower, Status::CapacityLimit);
             };
             if let Some(slot) = items.get_mut(k) {
@@ -434,25 +436,35 @@ fn support_along<R: Real>(support: &impl Fn(V2<R>) -> Corner<R>, u: V2<R>) -> (R
 }
 
 /// The corner to drop from a full polytope: the first whose two edges,
-/// merged into one chord, stay at least `upper` from the origin. Such a
-/// chord can never become the closest edge before EPA converges (if it were
-/// the closest, the bounds would already have met), and the polytope stays
-/// convex and around the origin; so any such corner will do, and the first
-/// costs the fewest chords. The ends of the closest edge (starting at
-/// `closest`) are kept. The corner before the dropped one starts the chord
-/// and gets its distance. `None` when no corner qualifies.
-fn prune<R: Real>(items: &mut [Corner<R>], closest: usize, upper: R, curved: bool) -> Option<usize> {
-    let n = items.len();
+/// merged into one, have a bound of at least `threshold` (the upper bound
+/// less the tolerance). The merged edge can then never be the closest before
+/// EPA converges (as the closest, its bound would end the loop), so it is
+/// never split again and dropping the corner costs nothing. The corner
+/// before the dropped one starts the merged edge and takes its bound. `None`
+/// when no corner qualifies.
+///
+/// An edge's stored distance is a lower bound of how far the difference's
+/// boundary is from the origin within the edge's cone (the triangle of the
+/// origin and the edge lies inside the difference), and a merged edge keeps
+/// the smaller of its two edges' bounds, which holds for both cones. The
+/// distance of the merged chord itself is no bound worth keeping: around a
+/// nearly round difference it is below the depth even where both faces it
+/// replaces are certified. Kept that way, a polytope with room for 32
+/// corners converges on a 1000-gon around the origin: the faces found at the
+/// depth merge away, and only the corners still being refined stay.
+///
+/// The ends of the closest edge never qualify: its bound is the lower
+/// bound, below the threshold. A merged edge whose ends are more than a half
+/// turn apart has the origin outside its line; that does no harm, as it is
+/// never refined, and its bound holds over its cone however wide.
+fn prune<R: Real>(items: &mut [Corner<R>], threshold: R, curved: bool) -> Option<usize> {
     // Neighbour indices walked along, not computed modulo `n` (a division).
-    let mut before = n.wrapping_sub(1);
-    for k in 0..n {
-        let after = if k + 1 == n { 0 } else { k + 1 };
-        if let (false, Some(prev), Some(next)) =
-            (k == closest || before == closest, items.get(before), items.get(after))
-        {
-            let chord = edge(prev.w, next.w).0;
-            if chord >= upper {
-                items.get_mut(before)?.set_edge_distance(chord, curved);
+    let mut before = items.len().wrapping_sub(1);
+    for k in 0..items.len() {
+        if let (Some(prev), Some(this)) = (items.get(before), items.get(k)) {
+            let bound = prev.edge_distance().min(this.edge_distance());
+            if bound >= threshold {
+                items.get_mut(before)?.set_edge_distance(bound, curved);
                 return Some(k);
             }
         }

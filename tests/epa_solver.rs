@@ -183,6 +183,43 @@ fn a_full_polytope_stays_sound() {
     assert!(limited > 0, "no capacity was too small: the test checks nothing");
 }
 
+/// A `k`-gon of radius 10^6 with integer vertices, its center 1.3% of its
+/// radius from the origin: many faces are nearly as deep as the deepest.
+fn round_off_centre(k: usize) -> Difference {
+    let vertices: Vec<(i64, i64)> = (0..k)
+        .map(|j| {
+            let angle = 0.1 + j as f64 * core::f64::consts::TAU / k as f64;
+            ((1e6 * angle.cos()).round() as i64 + 13_000, (1e6 * angle.sin()).round() as i64 - 7_000)
+        })
+        .collect();
+    Difference::new(&vertices)
+}
+
+#[test]
+fn a_full_polytope_merges_certified_faces_and_converges_exactly() {
+    for k in [100, 1000] {
+        let d = round_off_centre(k);
+        let exact = d.exact_depth_squared().sqrt();
+        let simplex = [d.point(0), d.point(k / 3), d.point(2 * k / 3)];
+        let config = EpaConfig::default();
+        for (n, estimate) in [
+            (20, Epa::<f64, 20>::new(config).solve(&d, &simplex)),
+            (32, Epa::<f64, 32>::new(config).solve(&d, &simplex)),
+        ] {
+            let name = format!("{k}-gon, N = {n}");
+            assert_eq!(estimate.status, Status::Converged, "{name}: {estimate:?}");
+            assert!(
+                (estimate.depth - exact).abs() <= 1e-12 * d.scale(),
+                "{name}: depth {} against {exact}",
+                estimate.depth
+            );
+            // Every support but the last was inserted: more than the free
+            // slots, so corners were merged.
+            assert!(estimate.iterations as usize - 1 > n - 3, "{name}: nothing merged: {estimate:?}");
+        }
+    }
+}
+
 #[test]
 fn a_full_polytope_prunes_and_still_converges_exactly() {
     // A thin 25-gon (an ellipse 77197 by 1041, turned), the origin near its

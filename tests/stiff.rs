@@ -590,6 +590,51 @@ macro_rules! stiff_suite {
                 std::thread::Builder::new().stack_size(64 << 20).spawn(move || run_pairs("big polygons", cases)).unwrap().join().unwrap();
             }
 
+            /// Nearly round polygons with many more sides than EPA's polytope
+            /// has room for (32 corners), around a small shape at or near
+            /// their center: every face of the difference is nearly as deep
+            /// as the deepest, so certifying the depth takes most of them.
+            /// Merging the faces EPA has certified keeps the polytope small:
+            /// each must converge, not stop with a full polytope.
+            ///
+            /// A square at the center ties the depth in four directions: the
+            /// polytope fills before the upper bound comes down to the depth,
+            /// nothing is certified yet, and EPA stops at its capacity. Those
+            /// answers are checked for soundness only.
+            #[test]
+            fn round_many_sided_polygons_around_a_small_shape() {
+                let (mut converging, mut tied) = (Vec::new(), Vec::new());
+                for n in [40usize, 100, 333, 1024] {
+                    let round = regular(n, 1.0, [0.0, 0.0], 0.1);
+                    let small = [
+                        ("triangle", poly(&[(-0.01, -0.01), (0.01, -0.01), (0.0, 0.01)])),
+                        ("segment", segment([-0.01, 0.0], [0.01, 0.003])),
+                        ("square", rect(-0.01, -0.01, 0.01, 0.01)),
+                    ];
+                    for (name, g) in small {
+                        for c in [[0.0, 0.0], [0.013, -0.007], [1e-6, 0.0]] {
+                            let case = case(format!("{n}-gon around a {name} at {c:?}"), round.clone(), shifted(&g, c), true);
+                            if name == "square" && c != [0.013, -0.007] {
+                                tied.push(case);
+                            } else {
+                                converging.push(case);
+                            }
+                        }
+                    }
+                }
+                let unconverged: Vec<String> = converging
+                    .iter()
+                    .filter_map(|c| {
+                        let (a, b) = (Placed::new(&c.a, c.ta), Placed::new(&c.b, c.tb));
+                        let pen = Gjk::<R>::new().penetration(&*a.shape, &a.tf, &*b.shape, &b.tf)?;
+                        (pen.status != Status::Converged).then(|| format!("{}: {pen:?}", c.name))
+                    })
+                    .collect();
+                assert!(unconverged.is_empty(), "{} of {} did not converge:\n{}", unconverged.len(), converging.len(), unconverged.join("\n"));
+                converging.extend(tied);
+                run_pairs("round many-sided", converging);
+            }
+
             #[test]
             fn one_shape_inside_the_other() {
                 let mut cases = Vec::new();
