@@ -68,21 +68,13 @@ fn uncapped_epa_converges_where_a_fixed_polytope_cannot() {
     let round = Polygon::<f64, 100>::new(&points).unwrap();
     let square = Rectangle::new(0.02, 0.02).unwrap();
     let at = Transform::IDENTITY;
+    // The oracle's exact depth, the shapes taken as placed (no transform).
+    let exact_polygon = |points: Vec<[f64; 2]>| {
+        gjk2d_oracle::transform_shape(&gjk2d_oracle::Shape::Polygon(points), 1.0, 0.0, 0.0, 0.0)
+    };
     let exact = gjk2d_oracle::pair(
-        &gjk2d_oracle::transform_shape(
-            &gjk2d_oracle::Shape::Polygon(points.iter().map(|p| [p.x, p.y]).collect()),
-            1.0,
-            0.0,
-            0.0,
-            0.0,
-        ),
-        &gjk2d_oracle::transform_shape(
-            &gjk2d_oracle::Shape::Polygon(vec![[-0.01, -0.01], [0.01, -0.01], [0.01, 0.01], [-0.01, 0.01]]),
-            1.0,
-            0.0,
-            0.0,
-            0.0,
-        ),
+        &exact_polygon(points.iter().map(|p| [p.x, p.y]).collect()),
+        &exact_polygon(vec![[-0.01, -0.01], [0.01, -0.01], [0.01, 0.01], [-0.01, 0.01]]),
     )
     .depth;
     let fixed = Gjk::<f64>::new().penetration(&round, &at, &square, &at).unwrap();

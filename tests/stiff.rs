@@ -612,12 +612,14 @@ macro_rules! stiff_suite {
                         ("square", rect(-0.01, -0.01, 0.01, 0.01)),
                     ];
                     for (name, g) in small {
-                        for c in [[0.0, 0.0], [0.013, -0.007], [1e-6, 0.0]] {
-                            let case = case(format!("{n}-gon around a {name} at {c:?}"), round.clone(), shifted(&g, c), true);
-                            if name == "square" && c != [0.013, -0.007] {
-                                tied.push(case);
+                        // Off centre by 1.3%, the square's four directions
+                        // are no longer tied.
+                        for (c, off_centre) in [([0.0, 0.0], false), ([0.013, -0.007], true), ([1e-6, 0.0], false)] {
+                            let pair = case(format!("{n}-gon around a {name} at {c:?}"), round.clone(), shifted(&g, c), true);
+                            if name == "square" && !off_centre {
+                                tied.push(pair);
                             } else {
-                                converging.push(case);
+                                converging.push(pair);
                             }
                         }
                     }
