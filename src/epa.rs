@@ -37,8 +37,9 @@ pub trait PenetrationSolver<R: Real> {
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
 /// the stack (default 32: 384 bytes in f32, 768 in f64). A full polytope
-/// drops corners that can no longer matter; when none qualifies the answer
-/// says `Status::CapacityLimit`.
+/// merges away the corner that matters least (one that no longer can,
+/// where there is one); when none can go the answer says
+/// `Status::CapacityLimit`.
 ///
 /// `N` is at least 3 (a triangle around the origin), checked when the
 /// program is compiled:
@@ -180,13 +181,15 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
 }
 
 /// Distance from the origin to the line through `p`, `q` (a counter-clockwise
-/// edge of a polytope around the origin), and its outward unit normal.
+/// edge of a polytope around the origin), and its outward unit normal. A
+/// polytope of one point (GJK touching at the origin) has its one edge from
+/// the point to itself: zero, and any direction to widen it along.
 fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
     // Componentwise normalisation (try_normalize): exact unit normals for
     // axis-aligned edges, and no under- or overflow for tiny or huge ones.
     match (q - p).perp_cw().try_normalize() {
         Some(unit) => (p.dot(unit).max(R::ZERO), unit),
-        None => (R::ZERO, p.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))),
+        None => (R::ZERO, V2::new(R::ONE, R::ZERO)),
     }
 }
 
@@ -276,8 +279,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             best = normal;
         }
         // A support equal to an end of the edge: exactly no progress (equal
-        // vertex ids give equal points, computed the same way).
-        let repeated = w.w == p.w || w.w == q.w;
+        // vertex ids give equal points, computed the same way). As one
+        // `contains`, 32 B less flash on the M4F than two `==`.
+        let repeated = [p.w, q.w].contains(&w.w);
         if repeated || upper - lower <= tolerance {
             break (i, lower, Status::Converged);
         }
@@ -293,7 +297,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             // Full: `new` takes the place of a corner that no longer matters,
             // moved to where it belongs (the corners between shift by one).
             let items = polytope.items_mut();
-            let Some(k) = prune(items, upper - tolerance, curved) else {
+            let Some(k) = prune(items, upper - tolerance, lower, curved) else {
                 break (i, lower, Status::CapacityLimit);
             };
             if let Some(slot) = items.get_mut(k) {
@@ -392,7 +396,9 @@ fn finish_curved<R: Real, S: Storage<R>>(
     let limit = iterations + 60;
     let step_tolerance = tolerance.min(R::ONE).max(R::EPSILON);
     while iterations < limit && t1 - t0 > step_tolerance {
-        let mut t = if g1 - g0 > R::ZERO { t0 - g0 * (t1 - t0) / (g1 - g0) } else { (t0 + t1) * R::HALF };
+        // The secant's root; bisection where it is not strictly inside
+        // (a NaN when both slopes are zero fails the test too).
+        let mut t = t0 - g0 * (t1 - t0) / (g1 - g0);
         if !(t > t0 && t < t1) {
             t = (t0 + t1) * R::HALF;
         }
@@ -435,13 +441,10 @@ fn support_along<R: Real>(support: &impl Fn(V2<R>) -> Corner<R>, u: V2<R>) -> (R
     (w.dot(u), w.dot(u.perp()))
 }
 
-/// The corner to drop from a full polytope: the first whose two edges,
-/// merged into one, have a bound of at least `threshold` (the upper bound
-/// less the tolerance). The merged edge can then never be the closest before
-/// EPA converges (as the closest, its bound would end the loop), so it is
-/// never split again and dropping the corner costs nothing. The corner
-/// before the dropped one starts the merged edge and takes its bound. `None`
-/// when no corner qualifies.
+/// The corner to drop from a full polytope, merging its two edges into
+/// one: the corner whose merged edge keeps the largest bound. The corner
+/// before it starts the merged edge and takes that bound. `None` when no
+/// corner can go.
 ///
 /// An edge's stored distance is a lower bound of how far the difference's
 /// boundary is from the origin within the edge's cone (the triangle of the
@@ -449,28 +452,46 @@ fn support_along<R: Real>(support: &impl Fn(V2<R>) -> Corner<R>, u: V2<R>) -> (R
 /// the smaller of its two edges' bounds, which holds for both cones. The
 /// distance of the merged chord itself is no bound worth keeping: around a
 /// nearly round difference it is below the depth even where both faces it
-/// replaces are certified. Kept that way, a polytope with room for 32
-/// corners converges on a 1000-gon around the origin: the faces found at the
-/// depth merge away, and only the corners still being refined stay.
+/// replaces are certified.
 ///
-/// The ends of the closest edge never qualify: its bound is the lower
-/// bound, below the threshold. A merged edge whose ends are more than a half
-/// turn apart has the origin outside its line; that does no harm, as it is
-/// never refined, and its bound holds over its cone however wide.
-fn prune<R: Real>(items: &mut [Corner<R>], threshold: R, curved: bool) -> Option<usize> {
-    // Neighbour indices walked along, not computed modulo `n` (a division).
-    let mut before = items.len().wrapping_sub(1);
-    for k in 0..items.len() {
-        if let (Some(prev), Some(this)) = (items.get(before), items.get(k)) {
-            let bound = prev.edge_distance().min(this.edge_distance());
-            if bound >= threshold {
-                items.get_mut(before)?.set_edge_distance(bound, curved);
-                return Some(k);
-            }
+/// A merged bound of at least `threshold` (the upper bound less the
+/// tolerance) is certified: the merged edge can never be the closest before
+/// EPA converges, so it is never split again and dropping the corner costs
+/// nothing. That is how 32 corners converge on a 1000-gon around the origin:
+/// the faces found at the depth merge away. Its ends may then be more than a
+/// half turn apart, which does no harm to an edge never refined.
+///
+/// Where no bound is certified yet (a square centred in a round polygon
+/// ties the depth in four directions, and the polytope fills before any
+/// face is found), the largest bound is the corner that matters least, and
+/// merging it trades information for room: the bounds stay sound, and EPA
+/// may come back to refine the merged edge. Such an edge must keep the
+/// origin on its inner side, as EPA's edges do. Either way, the ends of the
+/// closest edge never go: their merged bound is `lower`, and a candidate
+/// must beat it.
+fn prune<R: Real>(items: &mut [Corner<R>], threshold: R, lower: R, curved: bool) -> Option<usize> {
+    let n = items.len();
+    // Walking corner `k`, the candidate is the corner before it, `b`, with
+    // `a` before that: corners copied along, not indexed (no bounds checks).
+    let [.., mut a, mut b] = *items else { return None };
+    // The corner after the candidate, and the largest merged bound so far
+    // (edge bounds are never NaN: `edge` takes a `max` with zero).
+    let (mut after, mut bound) = (0, lower);
+    for (k, &c) in items.iter().enumerate() {
+        let merged = a.edge_distance().min(b.edge_distance());
+        // Uncertified, the merged chord must keep the origin inside.
+        if merged > bound && (merged >= threshold || a.w.cross(c.w) > R::ZERO) {
+            (after, bound) = (k, merged);
         }
-        before = k;
+        (a, b) = (b, c);
     }
-    None
+    if bound <= lower {
+        return None;
+    }
+    let pick = if after == 0 { n } else { after } - 1;
+    let start = if pick == 0 { n } else { pick } - 1;
+    items.get_mut(start)?.set_edge_distance(bound, curved);
+    Some(pick)
 }
 
 fn estimate<R: Real>(
