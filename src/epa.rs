@@ -294,7 +294,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let start = if polytope.insert_at(at, new) {
             i
         } else {
-            // Full: `new` takes the place of a corner that no longer matters,
+            // Full: `new` takes the place of the corner that matters least,
             // moved to where it belongs (the corners between shift by one).
             let items = polytope.items_mut();
             let Some(k) = prune(items, upper - tolerance, lower, curved) else {

@@ -176,7 +176,8 @@ fn a_full_polytope_stays_sound() {
         if estimate.status == Status::Converged {
             assert!((estimate.depth - exact).abs() <= tolerance, "N = {n}: converged to {}", estimate.depth);
         } else {
-            assert_eq!(estimate.status, Status::CapacityLimit, "N = {n}");
+            // Full with nothing to merge, or merging and going round.
+            assert!(matches!(estimate.status, Status::CapacityLimit | Status::IterationLimit), "N = {n}: {estimate:?}");
             limited += 1;
         }
     }
