@@ -10,9 +10,12 @@ pub enum Status {
     /// Converged: exactly (a support vertex repeated) or within the epsilon.
     Converged,
     /// Stopped at the configured iteration limit; the answer is the best
-    /// the query had, and its `error_bound` says how far it may be off.
+    /// the query had, and its `error_bound` says how far it may be off. A
+    /// full EPA polytope that keeps merging corners can end this way too
+    /// (raise the limit or the capacity).
     IterationLimit,
-    /// EPA's polytope filled up before it converged (raise its capacity).
+    /// EPA's polytope filled up with no corner it could merge away before
+    /// it converged (raise its capacity); the answer is sound, as above.
     CapacityLimit,
 }
 
