@@ -10,6 +10,7 @@
 
 use gjk2d::glam::DVec2;
 use gjk2d::{Epa, EpaConfig, MinkowskiDifference, PenetrationSolver, Status, SupportPoint};
+use proptest::prelude::*;
 
 /// A convex polygon (counter-clockwise, integer vertices) posing as B - A.
 struct Difference {
@@ -280,16 +281,15 @@ fn round_around(k: usize, (cx, cy): (i64, i64)) -> Difference {
     Difference::new(&vertices)
 }
 
-/// The convex hull of the sums of `a`'s and `b`'s vertices (their Minkowski
-/// sum), counter-clockwise, no collinear vertices: exact, in integers.
-fn minkowski_sum(a: &Difference, b: &[(i64, i64)]) -> Difference {
-    let mut points: Vec<(i64, i64)> =
-        a.vertices.iter().flat_map(|p| b.iter().map(move |q| (p.0 + q.0, p.1 + q.1))).collect();
+/// The convex hull of `points`, counter-clockwise, no collinear vertices
+/// (Andrew's monotone chain, exact in integers); `None` when it is flat or
+/// does not hold the origin.
+fn convex_hull(points: &[(i64, i64)]) -> Option<Difference> {
+    let mut points = points.to_vec();
     points.sort();
     points.dedup();
     let cross = |o: (i64, i64), p: (i64, i64), q: (i64, i64)| (p.0 - o.0) * (q.1 - o.1) - (p.1 - o.1) * (q.0 - o.0);
-    // Andrew's monotone chain: the lower hull left to right, then the upper
-    // hull right to left.
+    // The lower hull left to right, then the upper hull right to left.
     let mut hull: Vec<(i64, i64)> = Vec::new();
     for pass in [points.clone(), points.iter().rev().copied().collect()] {
         let start = hull.len();
@@ -301,7 +301,15 @@ fn minkowski_sum(a: &Difference, b: &[(i64, i64)]) -> Difference {
         }
         hull.pop();
     }
-    Difference::new(&hull)
+    let n = hull.len();
+    let holds_origin = (0..n).all(|i| cross((0, 0), hull[i], hull[(i + 1) % n]) >= 0);
+    (n >= 3 && holds_origin).then(|| Difference::new(&hull))
+}
+
+/// The Minkowski sum of `a` and `b`: the hull of their vertices' sums.
+fn minkowski_sum(a: &Difference, b: &[(i64, i64)]) -> Difference {
+    let sums: Vec<(i64, i64)> = a.vertices.iter().flat_map(|p| b.iter().map(move |q| (p.0 + q.0, p.1 + q.1))).collect();
+    convex_hull(&sums).expect("a round polygon around the origin plus a square around it")
 }
 
 #[test]
@@ -377,4 +385,76 @@ fn merging_uncertified_corners_keeps_every_answer_sound() {
         }
     }
     assert!(stopped_short > 0, "every capacity sufficed: the lossy merge went untested");
+}
+
+/// Points scattered over a square around the origin.
+fn scattered() -> impl Strategy<Value = Vec<(i64, i64)>> {
+    prop::collection::vec((-1000i64..=1000, -1000i64..=1000), 3..80)
+}
+
+/// Points within 100 of a circle of radius 10^6, its center up to 0.3
+/// radii from the origin (or on it).
+fn nearly_round() -> impl Strategy<Value = Vec<(i64, i64)>> {
+    let centre = prop_oneof![Just((0i64, 0i64)), (-300_000i64..=300_000, -300_000i64..=300_000)];
+    (prop::collection::vec((0u32..1_000_000, -100i64..=100), 3..300), centre).prop_map(|(raw, (cx, cy))| {
+        raw.into_iter()
+            .map(|(turn, jitter)| {
+                let angle = turn as f64 * core::f64::consts::TAU / 1e6;
+                let r = 1e6 + jitter as f64;
+                ((r * angle.cos()).round() as i64 + cx, (r * angle.sin()).round() as i64 + cy)
+            })
+            .collect()
+    })
+}
+
+/// A triangle of `d`'s vertices that holds the origin (inside or on its
+/// boundary), as GJK would hand over: the first found.
+fn enclosing_triangle(d: &Difference) -> Option<[SupportPoint<f64>; 3]> {
+    let v = &d.vertices;
+    let n = v.len();
+    let cross = |p: (i64, i64), q: (i64, i64)| p.0 * q.1 - p.1 * q.0;
+    for i in 0..n {
+        for j in i + 1..n {
+            for k in j + 1..n {
+                // Counter-clockwise (vertex order): the origin is inside when
+                // it is on no edge's outer side.
+                if cross(v[i], v[j]) >= 0 && cross(v[j], v[k]) >= 0 && cross(v[k], v[i]) >= 0 {
+                    return Some([d.point(i), d.point(j), d.point(k)]);
+                }
+            }
+        }
+    }
+    None
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    /// Random convex polygons around the origin (the hulls of scattered
+    /// points: a few vertices; of points near a circle: up to hundreds, many
+    /// faces nearly as deep as the deepest), and polytopes from 4 corners
+    /// up: every answer sound, every converged one exact.
+    #[test]
+    fn small_polytopes_stay_sound_on_random_polygons(raw in prop_oneof![scattered(), nearly_round()]) {
+        let Some(d) = convex_hull(&raw) else { return Ok(()) };
+        let Some(simplex) = enclosing_triangle(&d) else { return Ok(()) };
+        let exact = d.exact_depth_squared().sqrt();
+        let tolerance = 1e-12 * d.scale();
+        let config = EpaConfig::default();
+        for (n, estimate) in [
+            (4, Epa::<f64, 4>::new(config).solve(&d, &simplex)),
+            (5, Epa::<f64, 5>::new(config).solve(&d, &simplex)),
+            (7, Epa::<f64, 7>::new(config).solve(&d, &simplex)),
+            (12, Epa::<f64, 12>::new(config).solve(&d, &simplex)),
+            (32, Epa::<f64, 32>::new(config).solve(&d, &simplex)),
+        ] {
+            prop_assert!(estimate.depth + tolerance >= exact, "N = {}: depth below exact {}: {:?}", n, exact, estimate);
+            prop_assert!(estimate.depth - estimate.error_bound <= exact + tolerance, "N = {}: bound above exact {}: {:?}", n, exact, estimate);
+            let reach = d.support(-estimate.normal).point.dot(-estimate.normal);
+            prop_assert!(reach <= estimate.depth + tolerance, "N = {}: reach {} beyond {:?}", n, reach, estimate);
+            if estimate.status == Status::Converged {
+                prop_assert!((estimate.depth - exact).abs() <= tolerance, "N = {}: converged to {:?}, exact {}", n, estimate, exact);
+            }
+        }
+    }
 }
