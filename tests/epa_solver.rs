@@ -9,7 +9,7 @@
 //! polygon (`Epa<_, 3>`), where EPA must prune and still answer soundly.
 
 use gjk2d::glam::DVec2;
-use gjk2d::{Epa, EpaConfig, MinkowskiDifference, PenetrationSolver, Status, SupportPoint};
+use gjk2d::{Epa, EpaConfig, MinkowskiDifference, PenetrationEstimate, PenetrationSolver, Status, SupportPoint};
 use proptest::prelude::*;
 
 /// A convex polygon (counter-clockwise, integer vertices) posing as B - A.
@@ -85,6 +85,27 @@ fn check_depth(name: &str, difference: &Difference, simplex: &[SupportPoint<f64>
     assert!(reach <= estimate.depth + tolerance, "{name}: reach {reach} beyond depth {}", estimate.depth);
 }
 
+/// Whatever the status, an answer must be achievable (moving B by `depth`
+/// along `normal` separates: an upper bound of the depth) with its error
+/// bound reaching down to the exact depth; a converged one must be exact.
+fn check_sound(name: &str, d: &Difference, estimate: &PenetrationEstimate<f64>) -> Result<(), String> {
+    let exact = d.exact_depth_squared().sqrt();
+    let tolerance = 1e-12 * d.scale();
+    let reach = d.support(-estimate.normal).point.dot(-estimate.normal);
+    let wrong = if estimate.depth + tolerance < exact {
+        "depth below the exact one"
+    } else if estimate.depth - estimate.error_bound > exact + tolerance {
+        "error bound short of the exact depth"
+    } else if reach > estimate.depth + tolerance {
+        "the shapes still overlap when moved by the depth"
+    } else if estimate.status == Status::Converged && (estimate.depth - exact).abs() > tolerance {
+        "converged to a depth that is not exact"
+    } else {
+        return Ok(());
+    };
+    Err(format!("{name}: {wrong}: {estimate:?}, exact {exact}, reach {reach}"))
+}
+
 /// A hexagon around the origin, no edge through it.
 fn hexagon() -> Difference {
     Difference::new(&[(-5, -3), (4, -4), (7, 1), (3, 6), (-2, 5), (-6, 1)])
@@ -153,8 +174,6 @@ fn roomy_polytope_converges_exactly() {
 #[test]
 fn a_full_polytope_stays_sound() {
     let d = many_sided();
-    let exact = d.exact_depth_squared().sqrt();
-    let tolerance = 1e-12 * d.scale();
     let mut limited = 0;
     for n in [3usize, 4, 8] {
         let config = EpaConfig::default();
@@ -164,19 +183,8 @@ fn a_full_polytope_stays_sound() {
             4 => Epa::<f64, 4>::new(config).solve(&d, &simplex),
             _ => Epa::<f64, 8>::new(config).solve(&d, &simplex),
         };
-        // Whatever the status, the answer is achievable (an upper bound of
-        // the depth) and its error bound reaches down to the exact depth.
-        assert!(estimate.depth + tolerance >= exact, "N = {n}: depth {} below exact {exact}", estimate.depth);
-        assert!(
-            estimate.depth - estimate.error_bound <= exact + tolerance,
-            "N = {n}: bound {} above exact {exact}",
-            estimate.depth - estimate.error_bound
-        );
-        let reach = d.support(-estimate.normal).point.dot(-estimate.normal);
-        assert!(reach <= estimate.depth + tolerance, "N = {n}: reach {reach} beyond depth {}", estimate.depth);
-        if estimate.status == Status::Converged {
-            assert!((estimate.depth - exact).abs() <= tolerance, "N = {n}: converged to {}", estimate.depth);
-        } else {
+        check_sound(&format!("N = {n}"), &d, &estimate).unwrap();
+        if estimate.status != Status::Converged {
             // Full with nothing to merge, or merging and going round.
             assert!(matches!(estimate.status, Status::CapacityLimit | Status::IterationLimit), "N = {n}: {estimate:?}");
             limited += 1;
@@ -344,8 +352,6 @@ fn merging_uncertified_corners_keeps_every_answer_sound() {
     for k in [12, 40, 100, 333] {
         for centre in [(0, 0), (1, 0), (13_000, -7_000), (-250_000, 400_000)] {
             let d = round_around(k, centre);
-            let exact = d.exact_depth_squared().sqrt();
-            let tolerance = 1e-12 * d.scale();
             let simplex = [d.point(0), d.point(k / 3), d.point(2 * k / 3)];
             let config = EpaConfig::default();
             for (n, estimate) in [
@@ -357,19 +363,8 @@ fn merging_uncertified_corners_keeps_every_answer_sound() {
                 (32, Epa::<f64, 32>::new(config).solve(&d, &simplex)),
             ] {
                 let name = format!("{k}-gon centred at {centre:?}, N = {n}");
-                assert!(estimate.depth + tolerance >= exact, "{name}: depth below exact {exact}: {estimate:?}");
-                assert!(
-                    estimate.depth - estimate.error_bound <= exact + tolerance,
-                    "{name}: bound above exact {exact}: {estimate:?}"
-                );
-                let reach = d.support(-estimate.normal).point.dot(-estimate.normal);
-                assert!(reach <= estimate.depth + tolerance, "{name}: reach {reach} beyond {estimate:?}");
-                if estimate.status == Status::Converged {
-                    assert!(
-                        (estimate.depth - exact).abs() <= tolerance,
-                        "{name}: converged to {estimate:?}, exact {exact}"
-                    );
-                } else {
+                check_sound(&name, &d, &estimate).unwrap();
+                if estimate.status != Status::Converged {
                     stopped_short += 1;
                 }
                 // Centred (to within 1 in 10^6), a 100-gon's faces are all
@@ -438,8 +433,6 @@ proptest! {
     fn small_polytopes_stay_sound_on_random_polygons(raw in prop_oneof![scattered(), nearly_round()]) {
         let Some(d) = convex_hull(&raw) else { return Ok(()) };
         let Some(simplex) = enclosing_triangle(&d) else { return Ok(()) };
-        let exact = d.exact_depth_squared().sqrt();
-        let tolerance = 1e-12 * d.scale();
         let config = EpaConfig::default();
         for (n, estimate) in [
             (4, Epa::<f64, 4>::new(config).solve(&d, &simplex)),
@@ -448,13 +441,7 @@ proptest! {
             (12, Epa::<f64, 12>::new(config).solve(&d, &simplex)),
             (32, Epa::<f64, 32>::new(config).solve(&d, &simplex)),
         ] {
-            prop_assert!(estimate.depth + tolerance >= exact, "N = {}: depth below exact {}: {:?}", n, exact, estimate);
-            prop_assert!(estimate.depth - estimate.error_bound <= exact + tolerance, "N = {}: bound above exact {}: {:?}", n, exact, estimate);
-            let reach = d.support(-estimate.normal).point.dot(-estimate.normal);
-            prop_assert!(reach <= estimate.depth + tolerance, "N = {}: reach {} beyond {:?}", n, reach, estimate);
-            if estimate.status == Status::Converged {
-                prop_assert!((estimate.depth - exact).abs() <= tolerance, "N = {}: converged to {:?}, exact {}", n, estimate, exact);
-            }
+            check_sound(&format!("N = {n}"), &d, &estimate).map_err(TestCaseError::fail)?;
         }
     }
 }
