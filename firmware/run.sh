@@ -4,7 +4,8 @@
 # riscv32imac and riscv32imafc), the golden determinism hash (the host's on
 # every one), instructions and stack per query, flash budgets and the
 # no-panic link check. Writes size-table.md, icount.md and
-# stack.md beside this script. Exits non-zero on any failure.
+# stack.md beside this script and compares them with the committed ones:
+# a figure that grew fails the run. Exits non-zero on any failure.
 #
 #   bash firmware/run.sh
 #
@@ -14,6 +15,8 @@
 # but rustup components and targets.
 #
 # ALLOW_PANIC_PATHS=1 reports surviving panic paths without failing.
+# ACCEPT_GROWTH=1 reports figures that grew over the committed ones, and a
+# README.md that quotes other figures, without failing.
 # ENFORCE_BUDGETS=1 fails on the known budget misses too; =0 only reports.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -89,6 +92,13 @@ board() {
 }
 out="$CARGO_TARGET_DIR/run"
 mkdir -p "$out"
+# The committed figures, which this run's are compared with at the end:
+# HEAD's in a git checkout, else the files as they were before this run.
+FIGURES="icount stack size-table"
+for f in $FIGURES; do
+  git -C "$ROOT" show "HEAD:firmware/$f.md" >"$out/$f.committed.md" 2>/dev/null ||
+    cp "$FW/$f.md" "$out/$f.committed.md" 2>/dev/null || : >"$out/$f.committed.md"
+done
 
 # ---------------------------------------------------------------- tests
 expected_hash="$(tr -d ' \n' <"$ROOT/tests/golden_hash.txt")"
@@ -285,6 +295,51 @@ for bin in "${!BUDGET[@]}"; do
   dt=$((t - ${TEXT[size_0_empty.$M4]:-0}))
   [ "$dt" -le "${BUDGET[$bin]}" ] || miss "flash budget: ${LABEL[$bin]} is $dt bytes of .text on thumbv7em (> ${BUDGET[$bin]})"
 done
+
+# ---------------------------------------------------------------- regressions
+# Instruction counts, peak stacks and sizes are deterministic for one
+# compiler, so any difference from the committed figures is a change of the
+# code. Growth fails the run where the budgets are enforced: a change that
+# makes a query slower, deeper or bigger must commit the figures it
+# measured (this script has just written them), where the diff shows it.
+# ACCEPT_GROWTH=1 reports growth, and a README that quotes other figures,
+# without failing (to measure a change before committing it).
+step "figures against the committed ones"
+grown=()
+for f in $FIGURES; do
+  changes="$(awk -f "$FW/compare-figures.awk" "$out/$f.committed.md" "$FW/$f.md")"
+  if [ -z "$changes" ]; then
+    echo "$f.md: as committed"
+    continue
+  fi
+  echo "$f.md: $(grep -c . <<<"$changes") change(s) from the committed figures"
+  sed 's/^/  /' <<<"$changes"
+  while IFS= read -r change; do grown+=("$f.md: ${change#GREW    }"); done < <(grep '^GREW' <<<"$changes" || true)
+done
+# README.md quotes the three tables whole: each of their rows must be there
+# as measured, or the README states figures nobody measured.
+stale=0
+for f in $FIGURES; do
+  while IFS= read -r line; do
+    grep -Fxq -- "$line" "$ROOT/README.md" || { stale=$((stale + 1)); echo "README.md lacks this row of $f.md: $line"; }
+  done < <(grep '^|' "$FW/$f.md")
+done
+if [ "$stale" -gt 0 ]; then
+  if [ "$enforce_budgets" = 1 ] && [ "${ACCEPT_GROWTH:-0}" != 1 ]; then
+    fail "README.md's firmware tables differ from the measured ones in $stale row(s)"
+  else
+    echo "README.md's firmware tables differ from these measurements in $stale row(s) (reported, not failed)"
+  fi
+else
+  echo "README.md quotes the measured tables"
+fi
+if [ ${#grown[@]} -gt 0 ]; then
+  if [ "$enforce_budgets" = 1 ] && [ "${ACCEPT_GROWTH:-0}" != 1 ]; then
+    fail "${#grown[@]} figure(s) grew over the committed ones (commit the new firmware/*.md if intended; ACCEPT_GROWTH=1 reports only)"
+  else
+    echo "${#grown[@]} figure(s) grew (reported, not failed)"
+  fi
+fi
 
 step "summary"
 echo "run.sh took $(($(date +%s) - start)) s"
