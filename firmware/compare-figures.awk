@@ -12,9 +12,8 @@
 # A row is named by its cells before the first that starts with a number
 # (the query and precision, the firmware); its figures are the cells that
 # start with a number, each read as its leading number ("+1872 B (1.83 KB)"
-# is 1872). The QEMU counts and
-# the sizes are deterministic for one compiler, so every change is a change
-# of the code, not noise.
+# is 1872). The QEMU counts and the sizes are deterministic for one
+# compiler, so every change is a change of the code, not noise.
 
 function trim(s) {
   gsub(/^[ \t]+|[ \t]+$/, "", s)
@@ -48,10 +47,11 @@ FNR == 1 {
 /^\|/ {
   line = $0
   if (line ~ /^\|[ -:|]+\|$/) {
-    # The separator: the line before it was the header.
+    # The separator: the line before it was the header (the measured
+    # file's headers are read last and kept).
     table++
     ncolumns = cells_of(previous, header)
-    for (i = 1; i <= ncolumns; i++) column[version, table, i] = header[i]
+    for (i = 1; i <= ncolumns; i++) column[table, i] = header[i]
     previous = line
     next
   }
@@ -61,14 +61,12 @@ FNR == 1 {
   name = ""
   for (i = 1; i <= n && !is_figure(cell[i]); i++) name = name (name == "" ? "" : ", ") cell[i]
   key = table SUBSEP name
-  for (i = 1; i <= n; i++) {
-    if (!is_figure(cell[i])) continue
-    value[version, key, i] = figure(cell[i])
-    has[version, key, i] = 1
-  }
-  row[version, key] = 1
-  if (version == 2) order[++rows] = key
+  for (i = 1; i <= n; i++) if (is_figure(cell[i])) value[version, key, i] = figure(cell[i])
+  rows[version]++
+  order[version, rows[version]] = key
+  listed[version, key] = 1
   label[key] = name
+  table_of[key] = table
   width[key] = n
   next
 }
@@ -76,26 +74,23 @@ FNR == 1 {
 { previous = "" }
 
 END {
-  for (r = 1; r <= rows; r++) {
-    key = order[r]
-    split(key, part, SUBSEP)
-    if (!((1, key) in row)) {
+  for (r = 1; r <= rows[2]; r++) {
+    key = order[2, r]
+    if (!((1, key) in listed)) {
       print "NEW     " label[key]
       continue
     }
     for (i = 1; i <= width[key]; i++) {
-      if (!((2, key, i) in has) || !((1, key, i) in has)) continue
+      if (!((1, key, i) in value) || !((2, key, i) in value)) continue
       old = value[1, key, i]
       new = value[2, key, i]
       if (new == old) continue
       change = old == 0 ? "" : sprintf(" (%+.1f%%)", 100 * (new - old) / old)
-      print (new > old ? "GREW    " : "SHRANK  ") label[key] " / " column[2, part[1], i] ": " old " -> " new change
+      print (new > old ? "GREW    " : "SHRANK  ") label[key] " / " column[table_of[key], i] ": " old " -> " new change
     }
   }
-  for (k in row) {
-    split(k, part, SUBSEP)
-    if (part[1] != 1) continue
-    key = part[2] SUBSEP part[3]
-    if (!((2, key) in row)) print "GONE    " label[key]
+  for (r = 1; r <= rows[1]; r++) {
+    key = order[1, r]
+    if (!((2, key) in listed)) print "GONE    " label[key]
   }
 }
