@@ -5,7 +5,7 @@
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
 use crate::result::{RayCast, RayHit, RayOutcome, Status};
-use crate::shape::SupportMap;
+use crate::shape::{polytope_support, SupportMap};
 use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
 use crate::Error;
@@ -55,41 +55,212 @@ fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
 /// the hit is the last entry, its normal the entered face's.
 pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
-    let (mut lower, mut upper) = (R::ZERO, max);
-    let mut entered: Option<V2<R>> = None;
+    let mut clip = Clip::new(o, d, max);
     for (&a, &b) in vertices.iter().zip(vertices.iter().skip(1).chain(vertices.first())) {
+        if clip.misses(a, b) {
+            return RayCast::closed_form(RayOutcome::Miss);
+        }
+    }
+    clip.outcome()
+}
+
+/// Whether a polygon of capacity `N` and `len` vertices is cast by
+/// [`cast_ray_many_sided`]: for small capacities the search is not even
+/// compiled in.
+#[inline(always)]
+pub(crate) const fn searched<const N: usize>(len: usize) -> bool {
+    N > SCAN_MAX && len > SCAN_MAX
+}
+
+/// Up to this many vertices a polygon's edges are all clipped against: the
+/// count up to which its support is found by a scan too
+/// ([`polytope_support`]), so a firmware with small polygons links neither
+/// search.
+const SCAN_MAX: usize = 24;
+
+/// The ray's line meets a convex polygon's boundary on two edges: one on
+/// the chain that faces the ray (counter-clockwise from the vertex farthest
+/// to the ray's left to the one farthest to its right), one on the chain
+/// that faces away. Along each chain the vertices' side of the line changes
+/// monotonically, so a binary search finds where it changes, in O(log n).
+/// Only the edges there are clipped against (the far crossing only when the
+/// origin is past the near one): the scan's clip, with the scan's result
+/// wherever the decisive edges are among them.
+///
+/// Rounding can misplace the change among vertices within rounding of the
+/// line (`slack`, from `reach`, a bound on the vertices' distance from the
+/// ray's origin): every edge that touches them is clipped. A line within
+/// rounding of a tangent has no reliable crossing (edges along it give
+/// none); `None` then leaves the ray to the scan.
+pub(crate) fn cast_ray_many_sided<R: Real, const N: usize>(
+    v: &[V2<R>],
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+    reach: R,
+) -> Option<RayCast<R>> {
+    let n = v.len();
+    let left = d.perp();
+    let side = |i: usize| left.dot(at(v, i) - o);
+    // `side` rounds by at most 3 eps |v - o|_1 <= 3 sqrt(2) eps reach.
+    let slack = R::from_u32(8) * R::EPSILON * reach;
+    let leftmost = polytope_support::<R, N>(v, left).0;
+    let rightmost = polytope_support::<R, N>(v, -left).0;
+    let (farthest_left, farthest_right) = (side(leftmost), side(rightmost));
+    // The line passes the polygon by.
+    if farthest_left < -slack || farthest_right > slack {
+        return Some(RayCast::closed_form(RayOutcome::Miss));
+    }
+    // Within rounding of a tangent: the scan decides.
+    if farthest_left <= slack || farthest_right >= -slack {
+        return None;
+    }
+    let is_left = |i: usize| side(i) > slack;
+    let is_right = |i: usize| side(i) < -slack;
+    let entry = first_vertex_reaching(n, leftmost, rightmost, |i| side(i) <= R::ZERO)?;
+    let mut clip = Clip::new(o, d, max);
+    if clip.misses_around(v, entry, is_left, is_right) {
+        return Some(RayCast::closed_form(RayOutcome::Miss));
+    }
+    // Entered ahead of the origin: the line leaves the polygon farther on,
+    // so the hit stands without the search for where.
+    if clip.entered.is_none() {
+        let exit = first_vertex_reaching(n, rightmost, leftmost, |i| side(i) >= R::ZERO)?;
+        if clip.misses_around(v, exit, is_right, is_left) {
+            return Some(RayCast::closed_form(RayOutcome::Miss));
+        }
+    }
+    Some(clip.outcome())
+}
+
+/// On the chain counter-clockwise from vertex `from` to vertex `to` (where
+/// `reached` holds), the first vertex where it holds, if the chain is not
+/// empty.
+fn first_vertex_reaching(n: usize, from: usize, to: usize, reached: impl Fn(usize) -> bool) -> Option<usize> {
+    let length = wrap(to + n - from, n);
+    if length == 0 {
+        return None;
+    }
+    // The first step j in 1..=length with `reached`, given it holds at `length`.
+    let (mut lo, mut hi) = (1, length);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if reached(wrap(from + mid, n)) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    Some(wrap(from + lo, n))
+}
+
+/// `i mod n` for `i < 2 n`, without a division.
+#[inline(always)]
+fn wrap(i: usize, n: usize) -> usize {
+    if i >= n {
+        i - n
+    } else {
+        i
+    }
+}
+
+#[inline(always)]
+fn at<R: Real>(v: &[V2<R>], i: usize) -> V2<R> {
+    v.get(i).copied().unwrap_or_default()
+}
+
+/// The ray clipped by edge half-planes, one at a time (Cyrus-Beck): where
+/// it enters and leaves the intersection of those seen so far.
+struct Clip<R: Real> {
+    o: V2<R>,
+    d: V2<R>,
+    lower: R,
+    upper: R,
+    /// The normal of the edge the ray last entered through.
+    entered: Option<V2<R>>,
+}
+
+impl<R: Real> Clip<R> {
+    #[inline(always)]
+    fn new(o: V2<R>, d: V2<R>, max: R) -> Self {
+        Self { o, d, lower: R::ZERO, upper: max, entered: None }
+    }
+
+    /// Clips by the inner side of edge `a`-`b`; true when the ray
+    /// certainly misses.
+    #[inline(always)]
+    fn misses(&mut self, a: V2<R>, b: V2<R>) -> bool {
         let normal = (b - a).perp_cw();
         // Positive when the origin is on the inner side of this edge.
-        let numerator = normal.dot(a - o);
-        let denominator = normal.dot(d);
+        let numerator = normal.dot(a - self.o);
+        let denominator = normal.dot(self.d);
         if denominator == R::ZERO {
             if numerator < R::ZERO {
-                return RayCast::closed_form(RayOutcome::Miss);
+                return true;
             }
         } else if denominator < R::ZERO {
             // Entering. t = numerator / denominator > lower, multiplied out
             // (denominator < 0 flips it): one division per update, not per edge.
-            if numerator < lower * denominator {
-                lower = numerator / denominator;
-                entered = Some(normal);
+            if numerator < self.lower * denominator {
+                self.lower = numerator / denominator;
+                self.entered = Some(normal);
                 // A subnormal denominator (a ray parallel to the face to
                 // rounding) sends t to infinity: no entry, a miss.
-                if upper < lower || !lower.is_finite() {
-                    return RayCast::closed_form(RayOutcome::Miss);
+                if self.upper < self.lower || !self.lower.is_finite() {
+                    return true;
                 }
             }
-        } else if numerator < upper * denominator {
+        } else if numerator < self.upper * denominator {
             // Leaving: t < upper.
-            upper = numerator / denominator;
-            if upper < lower {
-                return RayCast::closed_form(RayOutcome::Miss);
+            self.upper = numerator / denominator;
+            if self.upper < self.lower {
+                return true;
             }
         }
+        false
     }
-    RayCast::closed_form(match entered {
-        None => RayOutcome::Inside,
-        Some(normal) => hit(o, d, lower, normal.try_normalize().unwrap_or(-d)),
-    })
+
+    /// Clips by the edges around `vertex`, where a chain crosses the ray's
+    /// line: from the last vertex before it clearly on the side the chain
+    /// comes from to the first clearly on the side it goes to. True when the
+    /// ray certainly misses. Each walk is bounded by the vertex count.
+    fn misses_around(
+        &mut self,
+        v: &[V2<R>],
+        vertex: usize,
+        came_from: impl Fn(usize) -> bool,
+        goes_to: impl Fn(usize) -> bool,
+    ) -> bool {
+        let n = v.len();
+        let mut first = wrap(vertex + n - 1, n);
+        let mut steps = 0;
+        while !came_from(first) && steps < n {
+            first = wrap(first + n - 1, n);
+            steps += 1;
+        }
+        let mut last = vertex;
+        while !goes_to(last) && steps < n {
+            last = wrap(last + 1, n);
+            steps += 1;
+        }
+        let mut k = first;
+        while k != last && steps < 2 * n {
+            let next = wrap(k + 1, n);
+            if self.misses(at(v, k), at(v, next)) {
+                return true;
+            }
+            k = next;
+            steps += 1;
+        }
+        false
+    }
+
+    fn outcome(self) -> RayCast<R> {
+        RayCast::closed_form(match self.entered {
+            None => RayOutcome::Inside,
+            Some(normal) => hit(self.o, self.d, self.lower, normal.try_normalize().unwrap_or(-self.d)),
+        })
+    }
 }
 
 /// Ray against a disk. The root is taken in the form without cancellation,

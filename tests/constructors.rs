@@ -13,6 +13,10 @@ use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::{Error, Polygon, Real, SupportMap, Transform};
 use proptest::prelude::*;
 
+#[path = "common/geo.rs"]
+mod geo;
+use geo::integer_hull as hull;
+
 /// What `Polygon::new` must answer for `p` (integer coordinates), decided
 /// without floats: a polygon is convex when every vertex lies on one side
 /// (the same for every edge, boundary included) of every edge.
@@ -116,30 +120,6 @@ fn convex(max_len: usize) -> impl Strategy<Value = Vec<(i64, i64)>> {
             Some(hull)
         },
     )
-}
-
-/// Andrew's monotone chain on integers, strictly convex, counter-clockwise.
-fn hull(mut p: Vec<(i64, i64)>) -> Vec<(i64, i64)> {
-    p.sort();
-    p.dedup();
-    if p.len() < 3 {
-        return p;
-    }
-    let cross = |o: (i64, i64), a: (i64, i64), b: (i64, i64)| (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0);
-    let mut h: Vec<(i64, i64)> = Vec::new();
-    for pass in 0..2 {
-        let start = h.len();
-        let iter: Box<dyn Iterator<Item = &(i64, i64)>> =
-            if pass == 0 { Box::new(p.iter()) } else { Box::new(p.iter().rev()) };
-        for &q in iter {
-            while h.len() >= start + 2 && cross(h[h.len() - 2], h[h.len() - 1], q) <= 0 {
-                h.pop();
-            }
-            h.push(q);
-        }
-        h.pop();
-    }
-    h
 }
 
 macro_rules! suite {

@@ -44,7 +44,7 @@ mod geo;
 #[macro_use]
 #[path = "common/placed.rs"]
 mod placed;
-use geo::{norm, sub, Geo, Pt};
+use geo::{integer_hull, norm, sub, Geo, Pt};
 
 fn r32(x: f64) -> f64 {
     x as f32 as f64
@@ -126,6 +126,72 @@ fn pose() -> impl Strategy<Value = Pose> {
         .prop_map(|(x, y, angle, k)| Pose { t: [x, y], angle, cos_sin_scale: k })
 }
 
+/// Polygons of more vertices than the closed-form ray cast scans (it then
+/// searches): the hull of integer points scattered in a thin ring inside a
+/// rotated ellipse of radius 2^20 lattice steps, scaled by a power of two, so
+/// every coordinate is exact in f32. Every few vertices, edges are split at
+/// their midpoints (collinear vertices), or corners cut off between the
+/// nearest lattice points on their edges: edges a few steps long, shorter
+/// than f32 rounds the side of a vertex to. The points come from a seeded
+/// generator, not from proptest's vectors: shrinking a thousand points is
+/// slow and tells nothing a seed does not.
+fn many_sided() -> impl Strategy<Value = Geo> {
+    let shape = (any::<u64>(), 40usize..1500, 0.01f64..1.0, 0.0..TAU, prop_oneof![Just(0.0), 0.0f64..0.05]);
+    (shape, 1usize..4, any::<bool>(), any::<bool>(), -3i32..4).prop_filter_map(
+        "24 hull vertices or fewer",
+        |((seed, count, aspect, phi, ring), every, split, cut, e)| {
+            let mut state = seed | 1;
+            let mut uniform = move || {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                (state >> 11) as f64 / (1u64 << 53) as f64
+            };
+            let radius = (1u64 << 20) as f64;
+            let (c, s) = (phi.cos(), phi.sin());
+            let cloud: Vec<(i64, i64)> = (0..count)
+                .map(|_| {
+                    let (theta, r) = (uniform() * TAU, radius * (1.0 - ring * uniform()));
+                    let (x, y) = (r * theta.cos(), r * aspect * theta.sin());
+                    ((c * x - s * y).round() as i64, (s * x + c * y).round() as i64)
+                })
+                .collect();
+            let hull = integer_hull(cloud);
+            if hull.len() <= 24 {
+                return None;
+            }
+            // The lattice point nearest `p` on the edge towards `q`, if not `q`.
+            let step = |p: (i64, i64), q: (i64, i64)| {
+                let g = gcd((q.0 - p.0).abs(), (q.1 - p.1).abs());
+                (g > 1).then(|| (p.0 + (q.0 - p.0) / g, p.1 + (q.1 - p.1) / g))
+            };
+            let n = hull.len();
+            let mut points = Vec::new();
+            for (k, &p) in hull.iter().enumerate() {
+                let (prev, next) = (hull[(k + n - 1) % n], hull[(k + 1) % n]);
+                match (cut && k % every == 0, step(p, prev), step(p, next)) {
+                    (true, Some(a), Some(b)) => points.extend([a, b]),
+                    _ => points.push(p),
+                }
+                let even = (next.0 - p.0) % 2 == 0 && (next.1 - p.1) % 2 == 0;
+                if split && k % every == 1 % every && even {
+                    points.push(((p.0 + next.0) / 2, (p.1 + next.1) / 2));
+                }
+            }
+            let unit = 2f64.powi(e - 20);
+            Some(Geo::Poly(points.iter().map(|&(x, y)| [x as f64 * unit, y as f64 * unit]).collect()))
+        },
+    )
+}
+
+fn gcd(a: i64, b: i64) -> i64 {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
+}
+
 /// A fixed seed so CI is reproducible; `PROPTEST_RNG_SEED=<u64>` explores
 /// other cases (failures are saved to the regressions file and replayed).
 fn config() -> ProptestConfig {
@@ -161,7 +227,11 @@ macro_rules! property_suite {
                 Some(match g {
                     Geo::Poly(pts) => {
                         let pts: Vec<$vec> = pts.iter().map(|&p| v(p)).collect();
-                        Box::new(Polygon::<R, 16>::new(&pts).ok()?)
+                        if pts.len() <= 16 {
+                            Box::new(Polygon::<R, 16>::new(&pts).ok()?)
+                        } else {
+                            Box::new(Polygon::<R, 2048>::new(&pts).ok()?)
+                        }
                     }
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).ok()?),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).ok()?),
@@ -325,6 +395,11 @@ macro_rules! property_suite {
                 if robust {
                     prop_assert_eq!(got, exact.status, "{}: {:?}", ctx(), cast);
                 }
+                // Inside only for an origin within rounding of the shape, grazing or not.
+                if got == RayStatus::Inside {
+                    let outside = pair(&ExactShape::point(o), &shape.exact).signed_distance;
+                    prop_assert!(outside <= bound, "{}: inside, but the origin is {outside:e} outside", ctx());
+                }
                 if let RayOutcome::Hit(h) = cast.outcome {
                     let (t, n, p) = (h.distance as f64, pt(h.normal), pt(h.point));
                     prop_assert!(t.is_finite() && finite(h.normal) && finite(h.point), "{}: {:?}", ctx(), h);
@@ -439,6 +514,51 @@ macro_rules! property_suite {
                     prop_assume!(d != [0.0, 0.0]);
                     ray_check(&shape, o, d, max * size, true, "closed form")?;
                     ray_check(&shape, o, d, max * size, false, "iterative")?;
+                }
+
+                /// Rays at many-sided polygons, which the closed form casts by
+                /// a binary search rather than a scan: aimed near the center,
+                /// at a vertex, along an edge's line (through the vertices on
+                /// it), nearly along it, or anywhere.
+                #[test]
+                fn rays_at_many_sided_polygons(g in many_sided(), p in pose(), from in (0.0..TAU, 0.0f64..3.0), aim in 0u8..5, pick in any::<prop::sample::Index>(), jitter in -0.6f64..0.6, max in prop_oneof![Just(0.0), 0.0f64..4.0]) {
+                    let Geo::Poly(vertices) = &g else { unreachable!() };
+                    let k = pick.index(vertices.len());
+                    let (vertex, next) = (vertices[k], vertices[(k + 1) % vertices.len()]);
+                    let Some(shape) = Placed::world(g.clone()) else { return Err(TestCaseError::reject("rejected")) };
+                    let (center, size) = (shape.center(), shape.radius());
+                    let o = rp([center[0] + from.1 * size * from.0.cos(), center[1] + from.1 * size * from.0.sin()]);
+                    let (o, towards) = match aim {
+                        0 => (o, sub(center, o)),
+                        1 => (o, sub(vertex, o)),
+                        2 | 3 => {
+                            let along = sub(next, vertex);
+                            let back = from.1 * size / norm(along);
+                            (rp([vertex[0] - back * along[0], vertex[1] - back * along[1]]), along)
+                        }
+                        _ => (o, [from.0.cos(), from.0.sin()]),
+                    };
+                    // Aim 3 turns the ray off the edge's line by up to 6e-6 rad: it crosses
+                    // the boundary at a shallow angle, a few rounding units from the line.
+                    let turn = match aim { 0 => jitter, 3 => jitter * 1e-5, _ => 0.0 };
+                    let angle = towards[1].atan2(towards[0]) + turn;
+                    let d = if turn != 0.0 { rp([angle.cos(), angle.sin()]) } else { rp(towards) };
+                    prop_assume!(d != [0.0, 0.0]);
+                    ray_check(&shape, o, d, max * size, true, "closed form")?;
+                    // Along an edge the iterative cast may stop anywhere within its
+                    // epsilon of the vertex, and the ray is nearly parallel to the
+                    // faces there: its error along the ray has no useful bound.
+                    if aim != 2 && aim != 3 {
+                        ray_check(&shape, o, d, max * size, false, "iterative")?;
+                    }
+                    // Placed by a transform: the ray reaches the polygon in its own frame.
+                    let Some(posed) = Placed::new(g, transform(&p, rp([p.t[0] * size, p.t[1] * size]))) else { return Err(TestCaseError::reject("rejected")) };
+                    let c = posed.center();
+                    let o = rp([c[0] + from.1 * size * from.0.cos(), c[1] + from.1 * size * from.0.sin()]);
+                    let angle = (c[1] - o[1]).atan2(c[0] - o[0]) + jitter;
+                    let d = rp([angle.cos(), angle.sin()]);
+                    prop_assume!(d != [0.0, 0.0]);
+                    ray_check(&posed, o, d, max * size, true, "closed form, posed")?;
                 }
 
                 #[test]

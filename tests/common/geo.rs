@@ -14,6 +14,30 @@ pub fn sub(p: Pt, q: Pt) -> Pt {
     [p[0] - q[0], p[1] - q[1]]
 }
 
+/// Andrew's monotone chain on integers, strictly convex, counter-clockwise.
+pub fn integer_hull(mut p: Vec<(i64, i64)>) -> Vec<(i64, i64)> {
+    p.sort();
+    p.dedup();
+    if p.len() < 3 {
+        return p;
+    }
+    let cross = |o: (i64, i64), a: (i64, i64), b: (i64, i64)| (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0);
+    let mut h: Vec<(i64, i64)> = Vec::new();
+    for pass in 0..2 {
+        let start = h.len();
+        let iter: Box<dyn Iterator<Item = &(i64, i64)>> =
+            if pass == 0 { Box::new(p.iter()) } else { Box::new(p.iter().rev()) };
+        for &q in iter {
+            while h.len() >= start + 2 && cross(h[h.len() - 2], h[h.len() - 1], q) <= 0 {
+                h.pop();
+            }
+            h.push(q);
+        }
+        h.pop();
+    }
+    h
+}
+
 /// A shape as plain numbers, exactly representable in the suite's precision.
 #[derive(Clone, Debug)]
 pub enum Geo {
