@@ -5,7 +5,7 @@
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
 use crate::result::{RayCast, RayHit, RayOutcome, Status};
-use crate::shape::{polytope_support, SupportMap};
+use crate::shape::{at, first_reached, polytope_support, SupportMap};
 use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
 use crate::Error;
@@ -63,20 +63,6 @@ pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, 
     }
     clip.outcome()
 }
-
-/// Whether a polygon of capacity `N` and `len` vertices is cast by
-/// [`cast_ray_many_sided`]: for small capacities the search is not even
-/// compiled in.
-#[inline(always)]
-pub(crate) const fn searched<const N: usize>(len: usize) -> bool {
-    N > SCAN_MAX && len > SCAN_MAX
-}
-
-/// Up to this many vertices a polygon's edges are all clipped against: the
-/// count up to which its support is found by a scan too
-/// ([`polytope_support`]), so a firmware with small polygons links neither
-/// search.
-const SCAN_MAX: usize = 24;
 
 /// The ray's line meets a convex polygon's boundary on two edges: one on
 /// the chain that faces the ray (counter-clockwise from the vertex farthest
@@ -141,17 +127,9 @@ fn first_vertex_reaching(n: usize, from: usize, to: usize, reached: impl Fn(usiz
     if length == 0 {
         return None;
     }
-    // The first step j in 1..=length with `reached`, given it holds at `length`.
-    let (mut lo, mut hi) = (1, length);
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if reached(wrap(from + mid, n)) {
-            hi = mid;
-        } else {
-            lo = mid + 1;
-        }
-    }
-    Some(wrap(from + lo, n))
+    // The first step in 1..=length with `reached`, which holds at `length`.
+    let step = first_reached(1, length, |step| reached(wrap(from + step, n)));
+    Some(wrap(from + step, n))
 }
 
 /// `i mod n` for `i < 2 n`, without a division.
@@ -162,11 +140,6 @@ fn wrap(i: usize, n: usize) -> usize {
     } else {
         i
     }
-}
-
-#[inline(always)]
-fn at<R: Real>(v: &[V2<R>], i: usize) -> V2<R> {
-    v.get(i).copied().unwrap_or_default()
 }
 
 /// The ray clipped by edge half-planes, one at a time (Cyrus-Beck): where

@@ -12,6 +12,10 @@ use gjk2d::glam::DVec2;
 use gjk2d::{Epa, EpaConfig, MinkowskiDifference, PenetrationEstimate, PenetrationSolver, Status, SupportPoint};
 use proptest::prelude::*;
 
+#[path = "common/geo.rs"]
+mod geo;
+use geo::integer_hull;
+
 /// A convex polygon (counter-clockwise, integer vertices) posing as B - A.
 struct Difference {
     vertices: Vec<(i64, i64)>,
@@ -285,27 +289,12 @@ fn round_around(k: usize, (cx, cy): (i64, i64)) -> Difference {
 }
 
 /// The convex hull of `points`, counter-clockwise, no collinear vertices
-/// (Andrew's monotone chain, exact in integers); `None` when it is flat or
-/// does not hold the origin.
+/// (exact in integers); `None` when it is flat or does not hold the origin.
 fn convex_hull(points: &[(i64, i64)]) -> Option<Difference> {
-    let mut points = points.to_vec();
-    points.sort();
-    points.dedup();
-    let cross = |o: (i64, i64), p: (i64, i64), q: (i64, i64)| (p.0 - o.0) * (q.1 - o.1) - (p.1 - o.1) * (q.0 - o.0);
-    // The lower hull left to right, then the upper hull right to left.
-    let mut hull: Vec<(i64, i64)> = Vec::new();
-    for pass in [points.clone(), points.iter().rev().copied().collect()] {
-        let start = hull.len();
-        for p in pass {
-            while hull.len() >= start + 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0 {
-                hull.pop();
-            }
-            hull.push(p);
-        }
-        hull.pop();
-    }
+    let hull = integer_hull(points.to_vec());
     let n = hull.len();
-    let holds_origin = (0..n).all(|i| cross((0, 0), hull[i], hull[(i + 1) % n]) >= 0);
+    let cross = |p: (i64, i64), q: (i64, i64)| p.0 * q.1 - p.1 * q.0;
+    let holds_origin = (0..n).all(|i| cross(hull[i], hull[(i + 1) % n]) >= 0);
     (n >= 3 && holds_origin).then(|| Difference::new(&hull))
 }
 

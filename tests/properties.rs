@@ -184,6 +184,22 @@ fn many_sided() -> impl Strategy<Value = Geo> {
     )
 }
 
+/// `from.1` sizes away from `center`, in direction `from.0`, rounded to f32:
+/// where the ray tests start.
+fn around(center: Pt, size: f64, from: (f64, f64)) -> Pt {
+    rp([center[0] + from.1 * size * from.0.cos(), center[1] + from.1 * size * from.0.sin()])
+}
+
+/// The direction from `o` towards `p` as an angle.
+fn bearing(o: Pt, p: Pt) -> f64 {
+    (p[1] - o[1]).atan2(p[0] - o[0])
+}
+
+/// The direction at `angle`, rounded to f32.
+fn heading(angle: f64) -> Pt {
+    rp([angle.cos(), angle.sin()])
+}
+
 fn gcd(a: i64, b: i64) -> i64 {
     if b == 0 {
         a
@@ -507,10 +523,9 @@ macro_rules! property_suite {
                     let size = s.nominal();
                     let Some(shape) = s.geo([c.0 * size, c.1 * size]).and_then(Placed::world) else { return Err(TestCaseError::reject("degenerate")) };
                     let center = shape.center();
-                    let o = rp([center[0] + from.1 * size * from.0.cos(), center[1] + from.1 * size * from.0.sin()]);
+                    let o = around(center, size, from);
                     // Aimed near the center (mostly hits) or anywhere.
-                    let angle = aim.unwrap_or_else(|| (center[1] - o[1]).atan2(center[0] - o[0]) + jitter);
-                    let d = rp([angle.cos(), angle.sin()]);
+                    let d = heading(aim.unwrap_or_else(|| bearing(o, center) + jitter));
                     prop_assume!(d != [0.0, 0.0]);
                     ray_check(&shape, o, d, max * size, true, "closed form")?;
                     ray_check(&shape, o, d, max * size, false, "iterative")?;
@@ -527,22 +542,20 @@ macro_rules! property_suite {
                     let (vertex, next) = (vertices[k], vertices[(k + 1) % vertices.len()]);
                     let Some(shape) = Placed::world(g.clone()) else { return Err(TestCaseError::reject("rejected")) };
                     let (center, size) = (shape.center(), shape.radius());
-                    let o = rp([center[0] + from.1 * size * from.0.cos(), center[1] + from.1 * size * from.0.sin()]);
-                    let (o, towards) = match aim {
-                        0 => (o, sub(center, o)),
-                        1 => (o, sub(vertex, o)),
+                    let o = around(center, size, from);
+                    let (o, d) = match aim {
+                        0 => (o, heading(bearing(o, center) + jitter)),
+                        1 => (o, rp(sub(vertex, o))),
                         2 | 3 => {
                             let along = sub(next, vertex);
                             let back = from.1 * size / norm(along);
-                            (rp([vertex[0] - back * along[0], vertex[1] - back * along[1]]), along)
+                            let o = rp([vertex[0] - back * along[0], vertex[1] - back * along[1]]);
+                            // Aim 3 turns the ray off the edge's line by up to 6e-6 rad: it crosses
+                            // the boundary at a shallow angle, a few rounding units from the line.
+                            (o, if aim == 2 { rp(along) } else { heading(bearing(vertex, next) + jitter * 1e-5) })
                         }
-                        _ => (o, [from.0.cos(), from.0.sin()]),
+                        _ => (o, heading(from.0)),
                     };
-                    // Aim 3 turns the ray off the edge's line by up to 6e-6 rad: it crosses
-                    // the boundary at a shallow angle, a few rounding units from the line.
-                    let turn = match aim { 0 => jitter, 3 => jitter * 1e-5, _ => 0.0 };
-                    let angle = towards[1].atan2(towards[0]) + turn;
-                    let d = if turn != 0.0 { rp([angle.cos(), angle.sin()]) } else { rp(towards) };
                     prop_assume!(d != [0.0, 0.0]);
                     ray_check(&shape, o, d, max * size, true, "closed form")?;
                     // Along an edge the iterative cast may stop anywhere within its
@@ -554,9 +567,8 @@ macro_rules! property_suite {
                     // Placed by a transform: the ray reaches the polygon in its own frame.
                     let Some(posed) = Placed::new(g, transform(&p, rp([p.t[0] * size, p.t[1] * size]))) else { return Err(TestCaseError::reject("rejected")) };
                     let c = posed.center();
-                    let o = rp([c[0] + from.1 * size * from.0.cos(), c[1] + from.1 * size * from.0.sin()]);
-                    let angle = (c[1] - o[1]).atan2(c[0] - o[0]) + jitter;
-                    let d = rp([angle.cos(), angle.sin()]);
+                    let o = around(c, size, from);
+                    let d = heading(bearing(o, c) + jitter);
                     prop_assume!(d != [0.0, 0.0]);
                     ray_check(&posed, o, d, max * size, true, "closed form, posed")?;
                 }
@@ -567,9 +579,8 @@ macro_rules! property_suite {
                     let Some(g) = s.geo([0.3 * size, 0.2 * size]) else { return Err(TestCaseError::reject("degenerate")) };
                     let Some(shape) = Placed::new(g, transform(&p, rp([p.t[0] * size, p.t[1] * size]))) else { return Err(TestCaseError::reject("degenerate")) };
                     let center = shape.center();
-                    let o = rp([center[0] + from.1 * size * from.0.cos(), center[1] + from.1 * size * from.0.sin()]);
-                    let angle = (center[1] - o[1]).atan2(center[0] - o[0]) + jitter;
-                    let d = rp([angle.cos(), angle.sin()]);
+                    let o = around(center, size, from);
+                    let d = heading(bearing(o, center) + jitter);
                     ray_check(&shape, o, d, max * size, true, "closed form")?;
                     ray_check(&shape, o, d, max * size, false, "iterative")?;
                 }

@@ -157,10 +157,21 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
 }
 
+/// Up to this many vertices a polytope is scanned, beyond it searched in
+/// O(log n): for its support here, and for a ray cast
+/// ([`cast_ray_many_sided`](crate::ray::cast_ray_many_sided)).
+const LINEAR_SCAN_MAX: usize = 24;
+
+/// Whether a polytope of capacity `N` and `len` vertices is searched rather
+/// than scanned: for small capacities no search is even compiled in.
+#[inline(always)]
+pub(crate) const fn searched<const N: usize>(len: usize) -> bool {
+    N > LINEAR_SCAN_MAX && len > LINEAR_SCAN_MAX
+}
+
 /// Support of a polytope core given as a vertex slice, as (index, vertex):
-/// a linear scan for up to 24 vertices, an O(log n) search over edge
-/// directions beyond. `N` is the capacity: for small ones the search is not
-/// even compiled in. No indexing can panic: an empty slice gives vertex 0 at
+/// a linear scan, or an O(log n) search over edge directions where
+/// [`searched`]. No indexing can panic: an empty slice gives vertex 0 at
 /// the origin.
 ///
 /// Out of line on bare-metal targets, like [`polytope_support_near`]: one
@@ -170,8 +181,7 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
-    const LINEAR_SCAN_MAX: usize = 24;
-    if N > LINEAR_SCAN_MAX && vertices.len() > LINEAR_SCAN_MAX {
+    if searched::<N>(vertices.len()) {
         let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), vertices.len());
         return (k, at(vertices, k));
     }
@@ -190,7 +200,7 @@ pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V
 /// Vertex `i`, or the origin out of range (never the case for the callers,
 /// whose indices stay below the length; this keeps panics out of the code).
 #[inline(always)]
-fn at<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
+pub(crate) fn at<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
     vertices.get(i).copied().unwrap_or_default()
 }
 
@@ -211,22 +221,31 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
     };
     let angle_less = |u: V2<R>, hu: bool, w: V2<R>, hw: bool| if hu != hw { !hu } else { u.cross(w) > R::ZERO };
     let ht = half(tangent);
-    // Find the first edge k with angle(e_k) >= angle(tangent); edges 1..n.
-    let (mut lo, mut hi) = (1usize, n);
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        let e = edge(mid);
-        if angle_less(e, half(e), tangent, ht) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
-    }
-    if lo >= n {
+    // The first edge k with angle(e_k) >= angle(tangent); edges 1..n.
+    let k = first_reached(1, n, |k| {
+        let e = edge(k);
+        !angle_less(e, half(e), tangent, ht)
+    });
+    if k >= n {
         0
     } else {
-        lo
+        k
     }
+}
+
+/// The first index in `lo..hi` where `reached` holds, given that it holds
+/// from there on; `hi` where it holds nowhere. A binary search over indices
+/// rather than a slice (the searches here go round a polygon).
+pub(crate) fn first_reached(mut lo: usize, mut hi: usize, reached: impl Fn(usize) -> bool) -> usize {
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if reached(mid) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    lo
 }
 
 /// Support from the previous support vertex `start`, by walking at most 3

@@ -1,6 +1,6 @@
 use super::polygon_frame::Frame;
-use super::{polytope_support, polytope_support_near, SupportMap};
-use crate::ray::{cast_ray_many_sided, cast_ray_polygon, searched, LocalRayCast};
+use super::{polytope_support, polytope_support_near, searched, SupportMap};
+use crate::ray::{cast_ray_many_sided, cast_ray_polygon, LocalRayCast};
 use crate::real::{Real, V2};
 use crate::Error;
 use glam::{DVec2, Vec2};
