@@ -68,7 +68,7 @@ impl<R: Real, P> Gjk<R, P> {
         let mut simplex = None::<Simplex<R, Witness<R>>>;
         match core_distance(&pair, &mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon())
         {
-            CoreProximity::Overlapping(_) => None,
+            CoreProximity::Overlapping { .. } => None,
             CoreProximity::Separated(ref core) => separation(&pair, core),
         }
     }
@@ -172,7 +172,9 @@ where
     #[cfg(not(target_os = "none"))]
     let mut simplex = None::<Simplex<R, ()>>;
     match core_distance(pair, &mut simplex, max_iterations, epsilon) {
-        CoreProximity::Overlapping(enclosing) => Proximity::Overlapping(enclosing),
+        CoreProximity::Overlapping { simplex, iterations } => {
+            Proximity::Overlapping(Enclosing::from_simplex(simplex, iterations))
+        }
         CoreProximity::Separated(ref core) => Proximity::Resolved(rounded_overlap(pair, core)),
     }
 }

@@ -20,8 +20,10 @@ use crate::simplex::{Closest, Payload, Simplex, Vertex};
 /// `P` is what the simplex carries: [`Witness`] points when the caller
 /// wants closest points (distance), nothing when it does not (penetration).
 pub(crate) enum CoreProximity<'s, R: Real, P> {
-    /// The cores overlap or touch.
-    Overlapping(Enclosing<R>),
+    /// The cores overlap or touch: the caller's simplex encloses the origin.
+    /// Referred to, not copied: the distance query, which needs no points,
+    /// would hold the copy in its frame while GJK runs.
+    Overlapping { simplex: &'s Simplex<R, P>, iterations: u32 },
     /// The cores are apart: closest point `v` of the Minkowski difference.
     Separated(CoreSeparation<'s, R, P>),
 }
@@ -36,6 +38,15 @@ pub(crate) struct Enclosing<R: Real> {
 }
 
 impl<R: Real> Enclosing<R> {
+    /// The points of a simplex GJK left enclosing the origin. Every slot,
+    /// used or not, copied as it is: `len` says which count, and no slot is
+    /// first cleared (a call to `memclr` on bare metal).
+    pub fn from_simplex<P: Payload<R>>(simplex: &Simplex<R, P>, iterations: u32) -> Self {
+        let (slots, len) = simplex.slots();
+        let point = |k: usize| SupportPoint { point: slots[k].w.to_glam(), id: slots[k].id };
+        Enclosing { points: [point(0), point(1), point(2)], len, iterations }
+    }
+
     pub fn points(&self) -> &[SupportPoint<R>] {
         self.points.get(..self.len).unwrap_or(&[])
     }
@@ -98,7 +109,7 @@ where
             Closest::Enclosed => (V2::zero(), R::ZERO),
         };
         if vv == R::ZERO {
-            return overlapping(simplex, iterations);
+            return CoreProximity::Overlapping { simplex, iterations };
         }
         // |v| grew: only rounding can do that, and the simplex is as close as
         // it gets (within rounding of the previous one). It still takes the
@@ -145,14 +156,6 @@ where
     B: SupportMap<R> + ?Sized,
 {
     Simplex::new(Vertex::from_minkowski(&pair.support_shared(pair.first_direction)))
-}
-
-fn overlapping<'s, R: Real, P: Payload<R>>(simplex: &Simplex<R, P>, iterations: u32) -> CoreProximity<'s, R, P> {
-    // Every slot, used or not, copied as it is: `len` says which count, and
-    // no slot is first cleared (a call to `memclr` on bare metal).
-    let (slots, len) = simplex.slots();
-    let point = |k: usize| SupportPoint { point: slots[k].w.to_glam(), id: slots[k].id };
-    CoreProximity::Overlapping(Enclosing { points: [point(0), point(1), point(2)], len, iterations })
 }
 
 fn separated<R: Real, P>(
