@@ -5,6 +5,8 @@
 #   GREW    <row> / <column>: <old> -> <new> (<relative change>)
 #   SHRANK  <row> / <column>: <old> -> <new> (<relative change>)
 #   NEW     <row>          (a row only the new file has)
+#   COLUMN  <old header> -> <new header>, or new: <header> (a column
+#           renamed or added; its figures are compared by position)
 #   GONE    <row>          (a row only the committed file has)
 #
 #   awk -f compare-figures.awk committed.md measured.md
@@ -52,6 +54,9 @@ FNR == 1 {
     table++
     ncolumns = cells_of(previous, header)
     for (i = 1; i <= ncolumns; i++) column[table, i] = header[i]
+    for (i = 1; i <= ncolumns; i++) heading[version, table, i] = header[i]
+    width_of[version, table] = ncolumns
+    tables[version] = table
     previous = line
     next
   }
@@ -60,6 +65,9 @@ FNR == 1 {
   n = cells_of(line, cell)
   name = ""
   for (i = 1; i <= n && !is_figure(cell[i]); i++) name = name (name == "" ? "" : ", ") cell[i]
+  # No figure: the header of the next table (read here before its
+  # separator line says so), not a row.
+  if (i > n) next
   key = table SUBSEP name
   for (i = 1; i <= n; i++) if (is_figure(cell[i])) value[version, key, i] = figure(cell[i])
   rows[version]++
@@ -74,6 +82,13 @@ FNR == 1 {
 { previous = "" }
 
 END {
+  for (t = 1; t <= tables[2]; t++) {
+    for (i = 1; i <= width_of[2, t]; i++) {
+      if ((1, t, i) in heading && heading[1, t, i] == heading[2, t, i]) continue
+      if ((1, t, i) in heading) print "COLUMN  " heading[1, t, i] " -> " heading[2, t, i]
+      else print "COLUMN  new: " heading[2, t, i]
+    }
+  }
   for (r = 1; r <= rows[2]; r++) {
     key = order[2, r]
     if (!((1, key) in listed)) {
