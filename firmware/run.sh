@@ -147,8 +147,8 @@ else
 fi
 
 # ---------------------------------------------------------------- icount and stack
-step "instructions and stack per query on $(board "$M4") and $(board "$M0"), QEMU -icount shift=0"
-for target in "$M4" "$M0"; do
+step "instructions and stack per query on $(board "$M4"), $(board "$M0") and $(board "$RV"), QEMU -icount shift=0"
+for target in "$M4" "$M0" "$RV"; do
   if cargo run --release --bin measure --target "$target" -q >"$out/measure-$target.txt" 2>&1; then
     echo "$target: $(grep '^CALIBRATION' "$out/measure-$target.txt" | cut -d'|' -f2-)"
   else
@@ -157,47 +157,54 @@ for target in "$M4" "$M0"; do
   fi
 done
 # One line per query: MEASURE|precision|query|iterations|M4F instructions|
-# M4F stack|thumbv6m instructions|thumbv6m stack. The iterations must agree:
-# the results are bit-identical on both (the golden hash), so the paths are.
+# M4F stack|thumbv6m instructions|thumbv6m stack|RISC-V instructions|
+# RISC-V stack. The iterations must agree: the results are bit-identical on
+# every target (the golden hash), so the paths are.
 awk -F'|' '
-  NR == FNR { if ($1 == "MEASURE") m0[$2 "|" $3] = $4 "|" $5 "|" $6; next }
+  FNR == 1 { file++ }
+  file < 3 { if ($1 == "MEASURE") other[file, $2 "|" $3] = $4 "|" $5 "|" $6; next }
   $1 == "MEASURE" {
-    key = $2 "|" $3
-    if (!(key in m0)) { print "MISSING|" key; next }
-    split(m0[key], o, "|")
-    if (o[1] != $4) print "ITERATIONS|" key "|" $4 "|" o[1]
-    print $0 "|" o[2] "|" o[3]
-  }' "$out/measure-$M0.txt" "$out/measure-$M4.txt" >"$out/measure.txt"
-while IFS='|' read -r what precision name m4 m0; do
+    line = $0
+    for (f = 1; f <= 2; f++) {
+      key = $2 "|" $3
+      if (!((f, key) in other)) { print "MISSING|" key "|" f; next }
+      split(other[f, key], o, "|")
+      if (o[1] != $4) print "ITERATIONS|" key "|" $4 "|" o[1]
+      line = line "|" o[2] "|" o[3]
+    }
+    print line
+  }' "$out/measure-$M0.txt" "$out/measure-$RV.txt" "$out/measure-$M4.txt" >"$out/measure.txt"
+while IFS='|' read -r what precision name m4 other; do
   case "$what" in
-    MISSING) fail "measure: no $M0 figures for $precision $name" ;;
-    ITERATIONS) fail "measure: $precision $name takes $m4 iterations on $M4 but $m0 on $M0" ;;
+    MISSING) fail "measure: $precision $name missing on the $([ "$m4" = 1 ] && echo "$M0" || echo "$RV") run" ;;
+    ITERATIONS) fail "measure: $precision $name takes $m4 iterations on $M4 but $other elsewhere" ;;
   esac
 done < <(grep -E '^(MISSING|ITERATIONS)\|' "$out/measure.txt" || true)
-# "5005 ticks for 20 x 10000 instructions: ..." -> "5005".
 calibration() { grep '^CALIBRATION' "$out/measure-$1.txt" | cut -d'|' -f2 | sed 's/ ticks.*//'; }
 {
-  echo "| query (opt-level \"s\", LTO) | precision | iterations | instructions, Cortex-M4F | instructions, thumbv6m |"
-  echo "| --- | --- | ---: | ---: | ---: |"
-  grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' '{printf "| %s | %s | %s | %.0f | %.0f |\n", $3, $2, $4, $5, $7}'
+  echo "| query (opt-level \"s\", LTO) | precision | iterations | instructions, Cortex-M4F | instructions, thumbv6m | instructions, riscv32imac |"
+  echo "| --- | --- | ---: | ---: | ---: | ---: |"
+  grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' '{printf "| %s | %s | %s | %.0f | %.0f | %.0f |\n", $3, $2, $4, $5, $7, $9}'
   echo
   echo "Instructions executed per query (QEMU \`-icount shift=0\`: SysTick at 25 MHz counts 40 instructions per tick;"
-  echo "each query is run 20 times between two reads, net of the loop's cost). Calibration: 20 x 10000 instructions read"
-  echo "$(calibration "$M4") ticks on the M4F and $(calibration "$M0") on thumbv6m (5000 expected)."
-  echo "thumbv6m is Cortex-M0/M0+ code (no FPU: f32 and f64 in software), run on QEMU's Cortex-M3 board (mps2-an385)."
+  echo "on RISC-V \`minstret\`, one instruction per count; each query is run 20 times between two reads, net of the loop's"
+  echo "cost). Calibration: 20 x 10000 instructions read $(calibration "$M4") ticks on the M4F and $(calibration "$M0") on thumbv6m"
+  echo "(5000 expected), $(calibration "$RV") counts on RISC-V (200000 and the loop's calls expected)."
+  echo "thumbv6m is Cortex-M0/M0+ code (no FPU: f32 and f64 in software), run on QEMU's Cortex-M3 board (mps2-an385);"
+  echo "riscv32imac has no FPU either (QEMU's virt board)."
   echo "Instructions, not cycles: for regressions and comparisons, not for real-time budgets."
 } >"$FW/icount.md"
 {
-  echo "| query (opt-level \"s\", LTO) | precision | peak stack, Cortex-M4F (bytes) | peak stack, thumbv6m (bytes) |"
-  echo "| --- | --- | ---: | ---: |"
-  grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' '{printf "| %s | %s | %s | %s |\n", $3, $2, $6, $8}'
+  echo "| query (opt-level \"s\", LTO) | precision | peak stack, Cortex-M4F (bytes) | peak stack, thumbv6m (bytes) | peak stack, riscv32imac (bytes) |"
+  echo "| --- | --- | ---: | ---: | ---: |"
+  grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' '{printf "| %s | %s | %s | %s | %s |\n", $3, $2, $6, $8, $10}'
   echo
   echo "EPA's capacity \`N\` (\`Epa<R, N>\`, polytope vertices kept on the stack) against the peak stack of a penetration query"
   echo "(two overlapping ellipses, the case that needs the most vertices):"
   echo
-  echo "| \`Epa<R, N>\` | precision | iterations | peak stack, Cortex-M4F (bytes) | peak stack, thumbv6m (bytes) |"
-  echo "| --- | --- | ---: | ---: | ---: |"
-  grep '^MEASURE|' "$out/measure.txt" | grep 'Epa N' | awk -F'|' '{n=$3; sub(/.*N = /, "", n); printf "| N = %s | %s | %s | %s | %s |\n", n, $2, $4, $6, $8}'
+  echo "| \`Epa<R, N>\` | precision | iterations | peak stack, Cortex-M4F (bytes) | peak stack, thumbv6m (bytes) | peak stack, riscv32imac (bytes) |"
+  echo "| --- | --- | ---: | ---: | ---: | ---: |"
+  grep '^MEASURE|' "$out/measure.txt" | grep 'Epa N' | awk -F'|' '{n=$3; sub(/.*N = /, "", n); printf "| N = %s | %s | %s | %s | %s | %s |\n", n, $2, $4, $6, $8, $10}'
   echo
   echo "Measured by painting 8 KB below the stack pointer, running the query and finding the lowest word that changed"
   echo "(includes the call itself). The default is N = 32. The budget (1 KB) is the M4F's."

@@ -1,12 +1,11 @@
 //! Shared code of the gjk2d test firmwares: a tiny test harness that prints
 //! through semihosting, the known-answer tests, the golden batch (included
-//! from the main crate's tests/golden_batch.rs) and, on Cortex-M, the
-//! instruction and stack meters.
+//! from the main crate's tests/golden_batch.rs) and the instruction and
+//! stack meters.
 #![no_std]
 
 pub mod harness;
 pub mod kat;
-#[cfg(target_arch = "arm")]
 pub mod meter;
 
 // The entry attribute and semihosting from the target's runtime: the same

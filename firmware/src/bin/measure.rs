@@ -1,15 +1,15 @@
-//! Instructions (QEMU -icount shift=0, SysTick) and peak stack per query on
-//! the Cortex-M4F, f32 and f64, at the default capacities, and how EPA's
+//! Instructions (QEMU -icount shift=0: SysTick on Cortex-M, `minstret` on
+//! RISC-V) and peak stack per query, f32 and f64, at the default
+//! capacities, and how EPA's
 //! capacity N changes the stack. Prints one `MEASURE|...` line per case
 //! (run.sh turns them into firmware/icount.md and firmware/stack.md).
 #![no_std]
 #![no_main]
 
 use core::hint::black_box as bb;
-use cortex_m_rt::entry;
-use cortex_m_semihosting::{debug, hprintln};
 use gjk2d::{Capsule, Circle, Ellipse, Epa, Gjk, GjkConfig, Polygon, Ray, Real, Transform};
-use gjk2d_firmware::meter;
+use gjk2d_firmware::{debug, entry, hprintln, meter};
+#[cfg(target_arch = "arm")]
 use panic_semihosting as _;
 
 struct Ctx {
@@ -138,8 +138,7 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
 
 #[entry]
 fn main() -> ! {
-    let mut cp = cortex_m::Peripherals::take().unwrap();
-    meter::start_systick(&mut cp.SYST);
+    meter::start();
 
     // Check the rate: 2 x 100_000 known instructions.
     let overhead = meter::ticks(&|| {});
