@@ -48,20 +48,13 @@ mod counter {
         cortex_m::register::msp::read() as usize
     }
 
-    /// `loops` iterations of a 2-instruction loop (subs, bne).
-    #[inline(always)]
-    pub fn two_instruction_loop(loops: u32) {
-        // SAFETY: a register-only countdown; no memory or stack is touched.
-        unsafe {
-            core::arch::asm!(
-                "2:",
-                "subs {0}, {0}, #1",
-                "bne 2b",
-                inout(reg) loops => _,
-                options(nomem, nostack)
-            );
-        }
+    /// The body of a 2-instruction countdown loop on `{0}` (subs, bne).
+    macro_rules! countdown {
+        () => {
+            "subs {0}, {0}, #1\nbne 2b"
+        };
     }
+    pub(super) use countdown;
 }
 
 #[cfg(target_arch = "riscv32")]
@@ -91,20 +84,13 @@ mod counter {
         sp
     }
 
-    /// `loops` iterations of a 2-instruction loop (addi, bnez).
-    #[inline(always)]
-    pub fn two_instruction_loop(loops: u32) {
-        // SAFETY: a register-only countdown; no memory or stack is touched.
-        unsafe {
-            core::arch::asm!(
-                "2:",
-                "addi {0}, {0}, -1",
-                "bnez {0}, 2b",
-                inout(reg) loops => _,
-                options(nomem, nostack)
-            );
-        }
+    /// The body of a 2-instruction countdown loop on `{0}` (addi, bnez).
+    macro_rules! countdown {
+        () => {
+            "addi {0}, {0}, -1\nbnez {0}, 2b"
+        };
     }
+    pub(super) use countdown;
 }
 
 pub use counter::{start, INSTRUCTIONS_PER_TICK};
@@ -130,7 +116,10 @@ pub fn instructions_x100(f: &dyn Fn(), overhead_ticks: u32) -> u32 {
 /// instructions, to check the counter's rate.
 #[inline(never)]
 pub fn known_instructions(loops: u32) {
-    counter::two_instruction_loop(loops);
+    // SAFETY: a register-only countdown; no memory or stack is touched.
+    unsafe {
+        core::arch::asm!("2:", counter::countdown!(), inout(reg) loops => _, options(nomem, nostack));
+    }
 }
 
 const PAINT: u32 = 0x5a5a_a5a5;
