@@ -53,7 +53,6 @@ FNR == 1 {
     # file's headers are read last and kept).
     table++
     ncolumns = cells_of(previous, header)
-    for (i = 1; i <= ncolumns; i++) column[table, i] = header[i]
     for (i = 1; i <= ncolumns; i++) heading[version, table, i] = header[i]
     width_of[version, table] = ncolumns
     tables[version] = table
@@ -101,7 +100,7 @@ END {
       new = value[2, key, i]
       if (new == old) continue
       change = old == 0 ? "" : sprintf(" (%+.1f%%)", 100 * (new - old) / old)
-      print (new > old ? "GREW    " : "SHRANK  ") label[key] " / " column[table_of[key], i] ": " old " -> " new change
+      print (new > old ? "GREW    " : "SHRANK  ") label[key] " / " heading[2, table_of[key], i] ": " old " -> " new change
     }
   }
   for (r = 1; r <= rows[1]; r++) {

@@ -160,24 +160,25 @@ done
 # M4F stack|thumbv6m instructions|thumbv6m stack|RISC-V instructions|
 # RISC-V stack. The iterations must agree: the results are bit-identical on
 # every target (the golden hash), so the paths are.
-awk -F'|' '
+awk -F'|' -v others="$M0 $RV" '
+  BEGIN { split(others, name, " ") }
   FNR == 1 { file++ }
   file < 3 { if ($1 == "MEASURE") other[file, $2 "|" $3] = $4 "|" $5 "|" $6; next }
   $1 == "MEASURE" {
+    key = $2 "|" $3
     line = $0
     for (f = 1; f <= 2; f++) {
-      key = $2 "|" $3
-      if (!((f, key) in other)) { print "MISSING|" key "|" f; next }
+      if (!((f, key) in other)) { print "MISSING|" key "|" name[f]; next }
       split(other[f, key], o, "|")
-      if (o[1] != $4) print "ITERATIONS|" key "|" $4 "|" o[1]
+      if (o[1] != $4) print "ITERATIONS|" key "|" name[f] "|" $4 "|" o[1]
       line = line "|" o[2] "|" o[3]
     }
     print line
   }' "$out/measure-$M0.txt" "$out/measure-$RV.txt" "$out/measure-$M4.txt" >"$out/measure.txt"
-while IFS='|' read -r what precision name m4 other; do
+while IFS='|' read -r what precision name target m4 other; do
   case "$what" in
-    MISSING) fail "measure: $precision $name missing on the $([ "$m4" = 1 ] && echo "$M0" || echo "$RV") run" ;;
-    ITERATIONS) fail "measure: $precision $name takes $m4 iterations on $M4 but $other elsewhere" ;;
+    MISSING) fail "measure: $precision $name missing on $target" ;;
+    ITERATIONS) fail "measure: $precision $name takes $m4 iterations on $M4 but $other on $target" ;;
   esac
 done < <(grep -E '^(MISSING|ITERATIONS)\|' "$out/measure.txt" || true)
 calibration() { grep '^CALIBRATION' "$out/measure-$1.txt" | cut -d'|' -f2 | sed 's/ ticks.*//'; }

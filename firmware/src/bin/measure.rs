@@ -1,8 +1,8 @@
 //! Instructions (QEMU -icount shift=0: SysTick on Cortex-M, `minstret` on
 //! RISC-V) and peak stack per query, f32 and f64, at the default
-//! capacities, and how EPA's
-//! capacity N changes the stack. Prints one `MEASURE|...` line per case
-//! (run.sh turns them into firmware/icount.md and firmware/stack.md).
+//! capacities, and how EPA's capacity N changes the stack. Prints one
+//! `MEASURE|...` line per case (run.sh turns them into firmware/icount.md
+//! and firmware/stack.md), and fails when the counter's rate is off.
 #![no_std]
 #![no_main]
 
@@ -154,9 +154,16 @@ fn main() -> ! {
         meter::INSTRUCTIONS_PER_TICK,
         overhead
     );
+    // A counter that does not run (or runs at another rate) would read as
+    // figures that shrank, which the figure check lets through.
+    let expected_x100 = meter::INSTRUCTIONS_PER_TICK as u64 * 100;
+    let calibrated = per_tick_x100.abs_diff(expected_x100) * 50 <= expected_x100;
+    if !calibrated {
+        hprintln!("measure FAILED: the counter's rate is more than 2% off");
+    }
     let ctx = Ctx { overhead };
-    let ok = suite::<f32>(&ctx, "f32").is_some() & suite::<f64>(&ctx, "f64").is_some();
-    hprintln!("measure {}", if ok { "done" } else { "FAILED to build the shapes" });
+    let ok = calibrated && suite::<f32>(&ctx, "f32").is_some() & suite::<f64>(&ctx, "f64").is_some();
+    hprintln!("measure {}", if ok { "done" } else { "FAILED" });
     debug::exit(if ok { debug::EXIT_SUCCESS } else { debug::EXIT_FAILURE });
     loop {}
 }
