@@ -7,7 +7,7 @@
 
 use crate::config::GjkConfig;
 use crate::epa::{Epa, PenetrationSolver};
-use crate::gjk::{core_distance, intersect, CoreProximity, CoreSeparation, Enclosing};
+use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
@@ -66,8 +66,7 @@ impl<R: Real, P> Gjk<R, P> {
     {
         let pair = Pair::new(a, ta, b, tb);
         let mut simplex = None::<Simplex<R, Witness<R>>>;
-        match core_distance(&pair, &mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon())
-        {
+        match pair.core_distance(&mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreProximity::Overlapping { .. } => None,
             CoreProximity::Separated(ref core) => separation(&pair, core),
         }
@@ -171,7 +170,7 @@ where
     let mut simplex = None::<Simplex<R, Witness<R>>>;
     #[cfg(not(target_os = "none"))]
     let mut simplex = None::<Simplex<R, ()>>;
-    match core_distance(pair, &mut simplex, max_iterations, epsilon) {
+    match pair.core_distance(&mut simplex, max_iterations, epsilon) {
         CoreProximity::Overlapping { simplex, iterations } => {
             Proximity::Overlapping(Enclosing::from_simplex(simplex, iterations))
         }

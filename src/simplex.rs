@@ -311,12 +311,28 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// the foot on it; `None` when the triangle encloses the origin (the
 /// boundary counts: touching).
 ///
-/// Out of line on bare-metal targets: its frame (three feet) is then only
-/// on the stack while a triangle is solved, not in every segment solve (in
-/// f64 on the M4F the intersection test peaked 0.24 KB deeper, past 1 KB).
+/// Out of line on bare metal in f32: its frame (three feet) is then only
+/// on the stack while a triangle is solved, not in every segment solve.
+/// Inlined in f64, with the segment solve (`FLAT_GJK`, in `real.rs`): the
+/// two frames saved 0.27 KB of registers there (with the segment solve
+/// still out of line, inlining this one alone had cost 0.24 KB).
+#[inline(always)]
+fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
+    if R::FLAT_GJK {
+        triangle_edge_body(wa, wb, wc)
+    } else {
+        triangle_edge_nested(wa, wb, wc)
+    }
+}
+
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline(always))]
-fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
+fn triangle_edge_nested<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
+    triangle_edge_body(wa, wb, wc)
+}
+
+#[inline(always)]
+fn triangle_edge_body<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
     let w = [wa, wb, wc];
     let area = (wb - wa).cross(wc - wa);
     // The origin is on the inner side of edge i->j when cross(wi, wj)
@@ -378,12 +394,27 @@ enum Foot<R> {
 /// underflows, or weights that would be 0 * inf (coordinates below 1e-19 in
 /// f32), keep the nearer end: as good as rounding allows.
 ///
-/// Out of line on bare-metal targets: the triangle's unrolled loop would
+/// Out of line on bare metal in f32: the triangle's unrolled loop would
 /// otherwise hold three copies and the segment a fourth (96 B more flash in
-/// each firmware on the M4F). Hosts inline it for speed.
+/// each firmware on the M4F). Inlined in f64 (`FLAT_GJK`, in `real.rs`),
+/// and on hosts for speed.
+#[inline(always)]
+fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
+    if R::FLAT_GJK {
+        segment_foot_body(p, q)
+    } else {
+        segment_foot_nested(p, q)
+    }
+}
+
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
-fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
+fn segment_foot_nested<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
+    segment_foot_body(p, q)
+}
+
+#[inline(always)]
+fn segment_foot_body<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     let e = q - p;
     let toward_q = -p.dot(e);
     let toward_p = q.dot(e);
