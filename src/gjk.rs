@@ -17,7 +17,7 @@ use crate::shape::SupportMap;
 use crate::simplex::{Closest, Payload, Simplex, Vertex};
 
 /// What GJK found out about the cores.
-/// `P` is what the simplex carries: [`Witness`] points when the caller
+/// `P` is what the simplex carries: [`Witness`](crate::simplex::Witness) points when the caller
 /// wants closest points (distance), nothing when it does not (penetration).
 pub(crate) enum CoreProximity<'s, R: Real, P> {
     /// The cores overlap or touch: the caller's simplex encloses the origin.
@@ -69,10 +69,11 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 }
 
 impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, A, B> {
-    /// Distance between the cores (radii not included): [`core_distance`],
+    /// Distance between the cores (radii not included): [`distance_loop`],
     /// inlined into each query where the scalar asks for flat frames
-    /// (`FLAT_GJK`, in `real.rs`): in f64 on the M4F the distance query then
-    /// peaks 0.17 KB lower. In f32 one shared copy keeps the flash budgets.
+    /// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where that took 0.17 KB
+    /// off the distance query's stack on the M4F). Elsewhere one shared
+    /// copy, which keeps the f32 flash budgets.
     #[inline(always)]
     pub(crate) fn core_distance<'s, P: Payload<R>>(
         &self,
@@ -81,7 +82,7 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
         epsilon: R,
     ) -> CoreProximity<'s, R, P> {
         if R::FLAT_GJK {
-            core_distance(self, slot, max_iterations, epsilon)
+            distance_loop(self, slot, max_iterations, epsilon)
         } else {
             self.shared_core_distance(slot, max_iterations, epsilon)
         }
@@ -94,11 +95,11 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
         max_iterations: u32,
         epsilon: R,
     ) -> CoreProximity<'s, R, P> {
-        core_distance(self, slot, max_iterations, epsilon)
+        distance_loop(self, slot, max_iterations, epsilon)
     }
 }
 
-/// Distance between the cores (radii not included).
+/// GJK's distance loop: see [`Pair::core_distance`].
 ///
 /// The simplex lives in the caller's `slot` (pass `None`), started here and
 /// reduced in place: returned by value it was copied twice (into the result,
@@ -107,7 +108,7 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
 /// with both the distance and the penetration query has one copy of the
 /// start (0.11 KB less on the M4F).
 #[inline(always)]
-fn core_distance<'s, R, A, B, P>(
+fn distance_loop<'s, R, A, B, P>(
     pair: &Pair<'_, R, A, B>,
     slot: &'s mut Option<Simplex<R, P>>,
     max_iterations: u32,
@@ -175,7 +176,7 @@ where
     separated(simplex, v, lower_bound, iterations, status)
 }
 
-/// The simplex of the first support point, for [`core_distance`]. Inlined,
+/// The simplex of the first support point, for [`distance_loop`]. Inlined,
 /// so it is built where it stays; an empty simplex to fill instead has its
 /// slots cleared (a call to `memclr`).
 #[inline(always)]

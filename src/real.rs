@@ -9,27 +9,29 @@
 use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
-pub(crate) mod sealed {
+mod sealed {
     /// Also how generic code reaches per-type `const fn`s and choices.
     pub trait Sealed: crate::shape::ConstChecks + crate::shape::SliceConst {
-        /// Whether GJK runs in few, flat frames on bare metal: its loop
-        /// inlined into each query and its simplex solve one function, not
-        /// three nested ones. Soft-float code keeps values in callee-saved
-        /// registers, which every frame saves on entry, and an f64 takes
-        /// two of them: in f64 on the M4F the nested solve took 0.70 KB of
-        /// stack and the flat one 0.42 KB, and the distance query peaked at
-        /// 1.59 KB with the shared loop and 1.14 KB with it inlined. In f32
-        /// the shared and nested functions are the smaller code (one copy
-        /// of the loop for distance and penetration, one of the segment
+        /// Whether GJK runs in few, flat frames: its loop inlined into each
+        /// query and its simplex solve one function, not three nested ones.
+        /// Only f64 on bare metal, where soft-float code keeps values in
+        /// callee-saved registers that every frame saves on entry, and an
+        /// f64 takes two of them. In f64 on the M4F (a walk of the call
+        /// graph in the disassembly) the nested solve took 0.70 KB of stack
+        /// and the flat one 0.42 KB, and the distance query 1.59 KB nested,
+        /// 1.32 KB with the flat solve and 1.14 KB with the loop inlined too.
+        /// In f32 the shared and nested functions are the smaller code (one
+        /// copy of the loop for distance and penetration, one of the segment
         /// solve instead of four), which the flash budgets need, and its
-        /// stacks are under 1 KB either way.
+        /// stacks are under 1 KB either way. Hosts and wasm keep their own
+        /// inlining.
         const FLAT_GJK: bool;
     }
     impl Sealed for f32 {
         const FLAT_GJK: bool = false;
     }
     impl Sealed for f64 {
-        const FLAT_GJK: bool = true;
+        const FLAT_GJK: bool = cfg!(target_os = "none");
     }
 }
 

@@ -313,9 +313,9 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 ///
 /// Out of line on bare metal in f32: its frame (three feet) is then only
 /// on the stack while a triangle is solved, not in every segment solve.
-/// Inlined in f64, with the segment solve (`FLAT_GJK`, in `real.rs`): the
-/// two frames saved 0.27 KB of registers there (with the segment solve
-/// still out of line, inlining this one alone had cost 0.24 KB).
+/// Inlined with the segment solve where the scalar asks for flat frames
+/// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where the two frames took
+/// 0.27 KB more stack than the one).
 #[inline(always)]
 fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
     if R::FLAT_GJK {
@@ -396,8 +396,8 @@ enum Foot<R> {
 ///
 /// Out of line on bare metal in f32: the triangle's unrolled loop would
 /// otherwise hold three copies and the segment a fourth (96 B more flash in
-/// each firmware on the M4F). Inlined in f64 (`FLAT_GJK`, in `real.rs`),
-/// and on hosts for speed.
+/// each firmware on the M4F). Inlined where the scalar asks for flat
+/// frames (`FLAT_GJK`, in `real.rs`), and on hosts for speed.
 #[inline(always)]
 fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     if R::FLAT_GJK {
