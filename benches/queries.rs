@@ -1,16 +1,27 @@
-//! The hot queries, gjk2d and parry2d side by side on the same pairs:
-//! `cargo bench --bench queries` (filter with e.g. `-- poly8/intersect`).
+//! The hot queries, gjk2d and parry2d side by side, timed as a physics step or a
+//! game frame meets them: every pass asks each of 16,384 distinct pairs once, so
+//! the branch predictor cannot learn the answers (a small batch repeated lets it,
+//! and flatters branchy code by 2x or more).
 //!
-//! Each benchmark runs one query over a batch of 64 pairs (about half overlapping)
-//! from a fixed seed; criterion reports the time per query (throughput: elements).
-//! Shapes are f32 values, so f32 and f64 see the same geometry.
+//! ```text
+//! cargo bench --bench queries                 # every family, f32 and f64
+//! cargo bench --bench queries -- poly8 ray    # families whose name contains a word
+//! GJK2D_BENCH_PASSES=31 cargo bench --bench queries
+//! ```
+//!
+//! The four contenders (gjk2d and parry2d, f32 and f64) take turns within every
+//! pass, in a rotating order, so a change of machine load falls on all alike. The
+//! table gives each one's median time per query over the passes and the median of
+//! the per-pass ratios gjk2d / parry2d. Shapes are held in an enum and passed to
+//! the generic queries (gjk2d) or as `dyn Shape` (parry), with identity
+//! transforms; inputs are f32 values, so both precisions see the same geometry.
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gjk2d::{Capsule, Circle, Gjk, Polygon, Ray, Real, SupportMap, Transform};
 use std::hint::black_box;
-use std::time::Duration;
+use std::time::Instant;
 
-const BATCH: usize = 64;
+/// Distinct cases per family and pass.
+const CASES: usize = 16_384;
 
 struct Rng(u64);
 
@@ -65,10 +76,13 @@ fn capsule(rng: &mut Rng, c: [f64; 2]) -> Sh {
     Sh::Capsule([r32(c[0] - u[0]), r32(c[1] - u[1])], [r32(c[0] + u[0]), r32(c[1] + u[1])], r32(rng.range(0.1, 0.4)))
 }
 
-/// A batch of pairs: A around the origin, B's center at 0.4..1.6 of their size away.
-fn pairs(seed: u64, mk_a: &dyn Fn(&mut Rng, [f64; 2]) -> Sh, mk_b: &dyn Fn(&mut Rng, [f64; 2]) -> Sh) -> Vec<(Sh, Sh)> {
+type Maker = dyn Fn(&mut Rng, [f64; 2]) -> Sh;
+
+/// Pairs: A around the origin, B's center 0.4 to 1.6 of their size away (about
+/// half of them overlap).
+fn pairs(seed: u64, count: usize, mk_a: &Maker, mk_b: &Maker) -> Vec<(Sh, Sh)> {
     let mut rng = Rng(seed);
-    (0..BATCH)
+    (0..count)
         .map(|_| {
             let a = mk_a(&mut rng, [0.0, 0.0]);
             let (d, t) = (rng.range(0.4, 1.6), rng.range(0.0, 6.3));
@@ -78,9 +92,11 @@ fn pairs(seed: u64, mk_a: &dyn Fn(&mut Rng, [f64; 2]) -> Sh, mk_b: &dyn Fn(&mut 
 }
 
 /// Rays from about 2.5 away aimed within 1 of the center; half unbounded.
-fn rays(seed: u64, mk: &dyn Fn(&mut Rng, [f64; 2]) -> Sh) -> Vec<([f64; 2], [f64; 2], f64, Sh)> {
+type RayCase = ([f64; 2], [f64; 2], f64, Sh);
+
+fn rays(seed: u64, count: usize, mk: &Maker) -> Vec<RayCase> {
     let mut rng = Rng(seed);
-    (0..BATCH)
+    (0..count)
         .map(|_| {
             let s = mk(&mut rng, [0.0, 0.0]);
             let t = rng.range(0.0, 6.3);
@@ -96,7 +112,7 @@ fn rays(seed: u64, mk: &dyn Fn(&mut Rng, [f64; 2]) -> Sh) -> Vec<([f64; 2], [f64
 // --- gjk2d -----------------------------------------------------------------------
 
 enum G<R: Real, const N: usize> {
-    P(Box<Polygon<R, N>>),
+    P(Polygon<R, N>),
     C(Circle<R>),
     K(Capsule<R>),
 }
@@ -104,7 +120,7 @@ enum G<R: Real, const N: usize> {
 fn g<R: Real, const N: usize>(s: &Sh) -> G<R, N> {
     let v = |p: &[f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
     match s {
-        Sh::Poly(p) => G::P(Box::new(Polygon::new(&p.iter().map(v).collect::<Vec<_>>()).unwrap())),
+        Sh::Poly(p) => G::P(Polygon::new(&p.iter().map(v).collect::<Vec<_>>()).unwrap()),
         Sh::Circle(c, r) => G::C(Circle::at(v(c), R::from_f64(*r)).unwrap()),
         Sh::Capsule(a, b, r) => G::K(Capsule::new(v(a), v(b), R::from_f64(*r)).unwrap()),
     }
@@ -113,40 +129,44 @@ fn g<R: Real, const N: usize>(s: &Sh) -> G<R, N> {
 macro_rules! with_g {
     ($s:expr, |$x:ident| $body:expr) => {
         match $s {
-            G::P($x) => {
-                let $x: &Polygon<R, N> = $x;
-                $body
-            }
+            G::P($x) => $body,
             G::C($x) => $body,
             G::K($x) => $body,
         }
     };
 }
 
-/// Calls `f` on every pair of the batch with both shapes' concrete types.
-fn g_pair_bench<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>)], query: &str) {
+#[derive(Clone, Copy)]
+enum Query {
+    Intersect,
+    Distance,
+    Penetration,
+}
+
+fn g_pairs<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>)], q: Query) {
     let gjk = Gjk::<R>::new();
     let id = Transform::<R>::IDENTITY;
-    fn run<R: Real, A: SupportMap<R>, B: SupportMap<R>>(gjk: &Gjk<R>, q: &str, a: &A, b: &B, id: &Transform<R>) {
+    #[inline(always)]
+    fn run<R: Real, A: SupportMap<R>, B: SupportMap<R>>(gjk: &Gjk<R>, q: Query, a: &A, b: &B, id: &Transform<R>) {
         match q {
-            "intersect" => {
+            Query::Intersect => {
                 black_box(gjk.intersects(a, id, b, id));
             }
-            "distance" => {
+            Query::Distance => {
                 black_box(gjk.distance(a, id, b, id));
             }
-            _ => {
+            Query::Penetration => {
                 black_box(gjk.penetration(a, id, b, id));
             }
         }
     }
     for (a, b) in batch {
         let (a, b) = (black_box(a), black_box(b));
-        with_g!(a, |x| with_g!(b, |y| run(&gjk, query, x, y, &id)));
+        with_g!(a, |x| with_g!(b, |y| run(&gjk, q, x, y, &id)));
     }
 }
 
-fn g_ray_bench<R: Real, const N: usize>(batch: &[(Ray<R>, R, G<R, N>)]) {
+fn g_rays<R: Real, const N: usize>(batch: &[(Ray<R>, R, G<R, N>)]) {
     let gjk = Gjk::<R>::new();
     let id = Transform::<R>::IDENTITY;
     for (ray, max, s) in batch {
@@ -159,7 +179,7 @@ fn g_ray_bench<R: Real, const N: usize>(batch: &[(Ray<R>, R, G<R, N>)]) {
 macro_rules! parry_side {
     ($m:ident, $p:ident, $R:ty) => {
         mod $m {
-            use super::Sh;
+            use super::{Query, Sh};
             use std::hint::black_box;
             use $p::math::{Pose, Vector};
             use $p::query::{self, Ray};
@@ -187,24 +207,24 @@ macro_rules! parry_side {
                 (Ray::new(v(o), d / d.length()), if max > 0.0 { max as $R } else { <$R>::MAX })
             }
 
-            pub fn pair_bench(batch: &[(PS, PS)], q: &str) {
+            pub fn pairs(batch: &[(PS, PS)], q: Query) {
                 for (a, b) in batch {
                     let (a, b) = (black_box(a), black_box(b));
                     match q {
-                        "intersect" => {
+                        Query::Intersect => {
                             let _ = black_box(query::intersection_test(&a.1, &*a.0, &b.1, &*b.0));
                         }
-                        "distance" => {
+                        Query::Distance => {
                             let _ = black_box(query::distance(&a.1, &*a.0, &b.1, &*b.0));
                         }
-                        _ => {
+                        Query::Penetration => {
                             let _ = black_box(query::contact(&a.1, &*a.0, &b.1, &*b.0, 0.0));
                         }
                     }
                 }
             }
 
-            pub fn ray_bench(batch: &[((Ray, $R), PS)]) {
+            pub fn rays(batch: &[((Ray, $R), PS)]) {
                 for ((ray, max), s) in batch {
                     let s = black_box(s);
                     black_box(s.0.cast_ray_and_get_normal(&s.1, ray, *max, true));
@@ -217,64 +237,168 @@ macro_rules! parry_side {
 parry_side!(parry32, parry2d, f32);
 parry_side!(parry64, parry2d_f64, f64);
 
-// --- the benchmarks --------------------------------------------------------------
+// --- timing ----------------------------------------------------------------------
 
-fn scene<const N: usize>(c: &mut Criterion, name: &str, batch: &[(Sh, Sh)]) {
-    let mut group = c.benchmark_group(name);
-    group.throughput(Throughput::Elements(BATCH as u64));
-    let g32: Vec<(G<f32, N>, G<f32, N>)> = batch.iter().map(|(a, b)| (g(a), g(b))).collect();
-    let g64: Vec<(G<f64, N>, G<f64, N>)> = batch.iter().map(|(a, b)| (g(a), g(b))).collect();
-    let p32: Vec<_> = batch.iter().map(|(a, b)| (parry32::build(a), parry32::build(b))).collect();
-    let p64: Vec<_> = batch.iter().map(|(a, b)| (parry64::build(a), parry64::build(b))).collect();
-    for q in ["intersect", "distance", "penetration"] {
-        group.bench_function(BenchmarkId::new(format!("{q}/gjk2d"), "f32"), |bn| bn.iter(|| g_pair_bench(&g32, q)));
-        group.bench_function(BenchmarkId::new(format!("{q}/parry2d"), "f32"), |bn| {
-            bn.iter(|| parry32::pair_bench(&p32, q))
-        });
-        group.bench_function(BenchmarkId::new(format!("{q}/gjk2d"), "f64"), |bn| bn.iter(|| g_pair_bench(&g64, q)));
-        group.bench_function(BenchmarkId::new(format!("{q}/parry2d"), "f64"), |bn| {
-            bn.iter(|| parry64::pair_bench(&p64, q))
-        });
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n == 0 {
+        f64::NAN
+    } else if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        (v[n / 2 - 1] + v[n / 2]) / 2.0
     }
-    group.finish();
 }
 
-fn ray_scene<const N: usize>(c: &mut Criterion, name: &str, batch: &[([f64; 2], [f64; 2], f64, Sh)]) {
-    let mut group = c.benchmark_group(name);
-    group.throughput(Throughput::Elements(BATCH as u64));
-    fn gr<R: Real, const N: usize>(b: &[([f64; 2], [f64; 2], f64, Sh)]) -> Vec<(Ray<R>, R, G<R, N>)> {
+/// One pass of each contender over its cases, `passes` times, in an order that
+/// rotates from pass to pass: per contender, the time per query of every pass.
+fn time_passes(passes: usize, cases: usize, contenders: &mut [&mut dyn FnMut()]) -> Vec<Vec<f64>> {
+    let k = contenders.len();
+    // One untimed pass each: page faults and lazy initialisation.
+    for c in contenders.iter_mut() {
+        c();
+    }
+    let mut times = vec![Vec::with_capacity(passes); k];
+    for pass in 0..passes {
+        for j in 0..k {
+            let i = (pass + j) % k;
+            let t = Instant::now();
+            (contenders[i])();
+            times[i].push(t.elapsed().as_nanos() as f64 / cases as f64);
+        }
+    }
+    times
+}
+
+/// `gjk / parry` per pass, then the median: the ratio of two runs taken side by
+/// side, which machine load moves less than either time.
+fn ratio(ours: &[f64], theirs: &[f64]) -> f64 {
+    median(ours.iter().zip(theirs).map(|(a, b)| a / b).collect())
+}
+
+struct Row {
+    family: String,
+    query: &'static str,
+    /// Median ns per query and ratio to parry, f32 then f64.
+    cells: [(f64, f64, f64); 2],
+}
+
+fn print_row(r: &Row) {
+    let [a, b] = r.cells;
+    println!(
+        "| {} | {} | {:.1} | {:.1} | {:.2} | {:.1} | {:.1} | {:.2} |",
+        r.family, r.query, a.0, a.1, a.2, b.0, b.1, b.2
+    );
+}
+
+fn pair_family<const N: usize>(name: &str, cases: &[(Sh, Sh)], passes: usize, rows: &mut Vec<Row>) {
+    let g32: Vec<(G<f32, N>, G<f32, N>)> = cases.iter().map(|(a, b)| (g(a), g(b))).collect();
+    let g64: Vec<(G<f64, N>, G<f64, N>)> = cases.iter().map(|(a, b)| (g(a), g(b))).collect();
+    let p32: Vec<_> = cases.iter().map(|(a, b)| (parry32::build(a), parry32::build(b))).collect();
+    let p64: Vec<_> = cases.iter().map(|(a, b)| (parry64::build(a), parry64::build(b))).collect();
+    for (q, qn) in
+        [(Query::Intersect, "intersects"), (Query::Distance, "distance"), (Query::Penetration, "penetration")]
+    {
+        let t = time_passes(
+            passes,
+            cases.len(),
+            &mut [&mut || g_pairs(&g32, q), &mut || parry32::pairs(&p32, q), &mut || g_pairs(&g64, q), &mut || {
+                parry64::pairs(&p64, q)
+            }],
+        );
+        let row = Row {
+            family: name.to_string(),
+            query: qn,
+            cells: [
+                (median(t[0].clone()), median(t[1].clone()), ratio(&t[0], &t[1])),
+                (median(t[2].clone()), median(t[3].clone()), ratio(&t[2], &t[3])),
+            ],
+        };
+        print_row(&row);
+        rows.push(row);
+    }
+}
+
+fn ray_family<const N: usize>(name: &str, cases: &[RayCase], passes: usize, rows: &mut Vec<Row>) {
+    fn gr<R: Real, const N: usize>(b: &[RayCase]) -> Vec<(Ray<R>, R, G<R, N>)> {
         let v = |p: &[f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
         b.iter().map(|(o, d, m, s)| (Ray::new(v(o), v(d)).unwrap(), R::from_f64(*m), g(s))).collect()
     }
-    let g32 = gr::<f32, N>(batch);
-    let g64 = gr::<f64, N>(batch);
-    let p32: Vec<_> = batch.iter().map(|(o, d, m, s)| (parry32::ray(o, d, *m), parry32::build(s))).collect();
-    let p64: Vec<_> = batch.iter().map(|(o, d, m, s)| (parry64::ray(o, d, *m), parry64::build(s))).collect();
-    group.bench_function(BenchmarkId::new("ray/gjk2d", "f32"), |bn| bn.iter(|| g_ray_bench(&g32)));
-    group.bench_function(BenchmarkId::new("ray/parry2d", "f32"), |bn| bn.iter(|| parry32::ray_bench(&p32)));
-    group.bench_function(BenchmarkId::new("ray/gjk2d", "f64"), |bn| bn.iter(|| g_ray_bench(&g64)));
-    group.bench_function(BenchmarkId::new("ray/parry2d", "f64"), |bn| bn.iter(|| parry64::ray_bench(&p64)));
-    group.finish();
+    let g32 = gr::<f32, N>(cases);
+    let g64 = gr::<f64, N>(cases);
+    let p32: Vec<_> = cases.iter().map(|(o, d, m, s)| (parry32::ray(o, d, *m), parry32::build(s))).collect();
+    let p64: Vec<_> = cases.iter().map(|(o, d, m, s)| (parry64::ray(o, d, *m), parry64::build(s))).collect();
+    let t = time_passes(
+        passes,
+        cases.len(),
+        &mut [&mut || g_rays(&g32), &mut || parry32::rays(&p32), &mut || g_rays(&g64), &mut || parry64::rays(&p64)],
+    );
+    let row = Row {
+        family: name.to_string(),
+        query: "raycast",
+        cells: [
+            (median(t[0].clone()), median(t[1].clone()), ratio(&t[0], &t[1])),
+            (median(t[2].clone()), median(t[3].clone()), ratio(&t[2], &t[3])),
+        ],
+    };
+    print_row(&row);
+    rows.push(row);
 }
 
-fn benches(c: &mut Criterion) {
+fn main() {
+    // `cargo bench` passes `--bench`; every other argument selects families.
+    let words: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
+    let wanted = |name: &str| words.is_empty() || words.iter().any(|w| name.contains(w.as_str()));
+    let passes = std::env::var("GJK2D_BENCH_PASSES").ok().and_then(|s| s.parse().ok()).unwrap_or(15);
+    println!("{CASES} distinct cases per family and pass, {passes} passes; ns per query (median over passes) and gjk2d / parry2d (median of per-pass ratios)\n");
+    println!("| family | query | gjk2d f32 ns | parry f32 ns | ratio f32 | gjk2d f64 ns | parry f64 ns | ratio f64 |");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|");
+    let mut rows = Vec::new();
     let p8 = |r: &mut Rng, c: [f64; 2]| poly(r, 8, c);
     let p64 = |r: &mut Rng, c: [f64; 2]| poly(r, 64, c);
     let p1024 = |r: &mut Rng, c: [f64; 2]| poly(r, 1024, c);
-    scene::<8>(c, "poly8", &pairs(1, &p8, &p8));
-    scene::<64>(c, "poly64", &pairs(2, &p64, &p64));
-    scene::<8>(c, "circle_poly8", &pairs(3, &circle, &p8));
-    scene::<8>(c, "capsule_poly8", &pairs(4, &capsule, &p8));
-    scene::<1024>(c, "poly1024", &pairs(5, &p1024, &p1024));
-    ray_scene::<8>(c, "ray_poly8", &rays(6, &p8));
-    ray_scene::<64>(c, "ray_poly64", &rays(7, &p64));
-    ray_scene::<8>(c, "ray_circle", &rays(8, &circle));
-    ray_scene::<1024>(c, "ray_poly1024", &rays(9, &p1024));
+    if wanted("poly8") {
+        pair_family::<8>("poly8", &pairs(1, CASES, &p8, &p8), passes, &mut rows);
+    }
+    if wanted("poly64") {
+        pair_family::<64>("poly64", &pairs(2, CASES, &p64, &p64), passes, &mut rows);
+    }
+    if wanted("poly1024") {
+        pair_family::<1024>("poly1024", &pairs(5, CASES, &p1024, &p1024), passes, &mut rows);
+    }
+    if wanted("circle_poly8") {
+        pair_family::<8>("circle_poly8", &pairs(3, CASES, &circle, &p8), passes, &mut rows);
+    }
+    if wanted("capsule_poly8") {
+        pair_family::<8>("capsule_poly8", &pairs(4, CASES, &capsule, &p8), passes, &mut rows);
+    }
+    if wanted("circle_circle") {
+        pair_family::<8>("circle_circle", &pairs(10, CASES, &circle, &circle), passes, &mut rows);
+    }
+    if wanted("ray_poly8") {
+        ray_family::<8>("ray_poly8", &rays(6, CASES, &p8), passes, &mut rows);
+    }
+    if wanted("ray_poly64") {
+        ray_family::<64>("ray_poly64", &rays(7, CASES, &p64), passes, &mut rows);
+    }
+    if wanted("ray_circle") {
+        ray_family::<8>("ray_circle", &rays(8, CASES, &circle), passes, &mut rows);
+    }
+    if wanted("ray_capsule") {
+        ray_family::<8>("ray_capsule", &rays(11, CASES, &capsule), passes, &mut rows);
+    }
+    if wanted("ray_poly1024") {
+        ray_family::<1024>("ray_poly1024", &rays(9, CASES, &p1024), passes, &mut rows);
+    }
+    let slower: Vec<String> = rows
+        .iter()
+        .flat_map(|r| {
+            [("f32", r.cells[0].2), ("f64", r.cells[1].2)]
+                .into_iter()
+                .filter(|(_, x)| *x > 1.0)
+                .map(move |(p, x)| format!("{} {} {p} ({x:.2})", r.family, r.query))
+        })
+        .collect();
+    println!("\nslower than parry2d: {}", if slower.is_empty() { "none".to_string() } else { slower.join(", ") });
 }
-
-criterion_group! {
-    name = queries;
-    config = Criterion::default().sample_size(20).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_millis(800));
-    targets = benches
-}
-criterion_main!(queries);

@@ -185,16 +185,37 @@ pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V
         let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), vertices.len());
         return (k, at(vertices, k));
     }
-    let mut best = (0, V2::zero());
+    scan_support(vertices, d)
+}
+
+/// The first vertex of largest dot product with `d`. On hosts its index is
+/// kept by a select, not a branch: which vertex leads changes from query to
+/// query, and a branch on it is mispredicted about twice in an 8-gon's scan.
+/// Microcontrollers have no predictor to miss, and there the branch is the
+/// fewer instructions. Both give the same vertex, to the bit. An empty slice
+/// gives vertex 0 at the origin.
+#[inline(always)]
+fn scan_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
     let mut best_dot = -R::INFINITY;
+    if cfg!(target_os = "none") {
+        let mut best = (0, V2::zero());
+        for (i, &v) in vertices.iter().enumerate() {
+            let dot = v.dot(d);
+            if dot > best_dot {
+                best = (i, v);
+                best_dot = dot;
+            }
+        }
+        return best;
+    }
+    let mut best_i = 0;
     for (i, &v) in vertices.iter().enumerate() {
         let dot = v.dot(d);
-        if dot > best_dot {
-            best = (i, v);
-            best_dot = dot;
-        }
+        let better = dot > best_dot;
+        best_i = core::hint::select_unpredictable(better, i, best_i);
+        best_dot = core::hint::select_unpredictable(better, dot, best_dot);
     }
-    best
+    (best_i, at(vertices, best_i))
 }
 
 /// Vertex `i`, or the origin out of range (never the case for the callers,
@@ -248,6 +269,11 @@ pub(crate) fn first_reached(mut lo: usize, mut hi: usize, reached: impl Fn(usize
     lo
 }
 
+/// Up to this capacity a polytope is always scanned: firmware with small
+/// polygons then links no walk, and on hosts a branch-free scan of a few
+/// vertices beats a walk whose steps the branch predictor cannot guess.
+pub(crate) const SCAN_ONLY_MAX: usize = 8;
+
 /// Support from the previous support vertex `start`, by walking at most 3
 /// steps; a direction that turned farther than that (or an out-of-range
 /// hint) falls back to the full search, so a jump never costs O(n).
@@ -257,13 +283,6 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     d: V2<R>,
     start: u32,
 ) -> (usize, V2<R>) {
-    // Up to this capacity the polygon is scanned, and firmware with small
-    // polygons links no walk: 0.2 to 0.3 KB less flash on the M4F, where
-    // instructions move by at most 6% either way for 4 to 6 vertices
-    // (walk -> scan at 00160b6: overlapping test 1372 -> 1306, EPA 4280 ->
-    // 4094, apart 1100 -> 1144, distance 2540 -> 2678). On x86-64 the walk is faster from about 8
-    // vertices, so larger capacities walk.
-    const SCAN_ONLY_MAX: usize = 8;
     if N > SCAN_ONLY_MAX {
         walk_from::<R, N>(vertices, d, start)
     } else {

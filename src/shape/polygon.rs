@@ -9,8 +9,10 @@ use glam::{DVec2, Vec2};
 ///
 /// The vertices are a plain array and a length, not a `heapless::Vec`: a
 /// type without a destructor is what lets a `const` declare one
-/// ([`from_array`](Polygon::from_array)). Unused slots stay zero, so the
-/// derived comparison compares the polygons.
+/// ([`from_array`](Polygon::from_array)). Unused slots stay zero, or hold
+/// copies of the first vertex where a support scan reads them all
+/// ([`SCANS_EVERY_SLOT`](Polygon::SCANS_EVERY_SLOT)), so the derived
+/// comparison compares the polygons.
 ///
 /// Vertices are kept counter-clockwise and relative to the first one (the
 /// reference point), so a polygon given in world coordinates far from the
@@ -42,6 +44,12 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         let mut vertices: [V2<R>; N] =
             core::array::from_fn(|i| points.get(i).map_or(V2::zero(), |&p| V2::from_glam(p)));
         let frame = R::frame_polygon(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
+        if Self::SCANS_EVERY_SLOT {
+            let first = vertices.first().copied().unwrap_or_default();
+            for slot in vertices.iter_mut().skip(points.len()) {
+                *slot = first;
+            }
+        }
         Ok(Self::framed(vertices, points.len(), frame))
     }
 
@@ -62,6 +70,23 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         // Clamped rather than checked: `len <= N` always holds, and the
         // compiler sees from the clamp that the slice cannot panic.
         &self.vertices[..self.len.min(N)]
+    }
+
+    /// Whether a support scan reads every slot: on hosts, for small
+    /// capacities, where a scan of fixed length has no branch on the vertex
+    /// count to mispredict. The unused slots then copy vertex 0, which a
+    /// strict comparison never prefers. Bare-metal targets scan the vertices
+    /// alone: fewer products are fewer cycles there.
+    const SCANS_EVERY_SLOT: bool = cfg!(not(target_os = "none")) && N <= super::SCAN_ONLY_MAX;
+
+    /// What a support scan reads ([`SCANS_EVERY_SLOT`](Self::SCANS_EVERY_SLOT)).
+    #[inline(always)]
+    fn scanned(&self) -> &[V2<R>] {
+        if Self::SCANS_EVERY_SLOT {
+            &self.vertices
+        } else {
+            self.vertices()
+        }
     }
 
     /// A regular polygon of `count` vertices on a circle of `radius` about the
@@ -175,11 +200,11 @@ fn vertex_id<const N: usize>(i: usize) -> u32 {
 impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[inline]
     fn support(&self, direction: R::Vector) -> R::Vector {
-        polytope_support::<R, N>(self.vertices(), V2::from_glam(direction)).1.to_glam()
+        polytope_support::<R, N>(self.scanned(), V2::from_glam(direction)).1.to_glam()
     }
     #[inline]
     fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
-        let (i, v) = polytope_support_near::<R, N>(self.vertices(), V2::from_glam(direction), near);
+        let (i, v) = polytope_support_near::<R, N>(self.scanned(), V2::from_glam(direction), near);
         (v.to_glam(), vertex_id::<N>(i))
     }
     fn center(&self) -> R::Vector {
