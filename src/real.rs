@@ -26,12 +26,100 @@ mod sealed {
         /// stacks are under 1 KB either way. Hosts and wasm keep their own
         /// inlining.
         const FLAT_GJK: bool;
+
+        /// The index of the first of exactly eight vertices with the largest
+        /// dot product with `d`, in SIMD where the target has it (x86-64's
+        /// SSE2): no branch at all. `None` elsewhere, or for another count,
+        /// where a scalar scan does it. The products round as the scalar
+        /// ones do, and ties go to the first, so the vertex is the same.
+        #[inline(always)]
+        fn first_max_dot8(vertices: &[super::V2<Self>], d: super::V2<Self>) -> Option<usize>
+        where
+            Self: Sized,
+        {
+            let _ = (vertices, d);
+            None
+        }
     }
     impl Sealed for f32 {
         const FLAT_GJK: bool = false;
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn first_max_dot8(vertices: &[super::V2<f32>], d: super::V2<f32>) -> Option<usize> {
+            Some(super::sse2::first_max_dot8_f32(vertices.try_into().ok()?, d))
+        }
     }
     impl Sealed for f64 {
         const FLAT_GJK: bool = cfg!(target_os = "none");
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn first_max_dot8(vertices: &[super::V2<f64>], d: super::V2<f64>) -> Option<usize> {
+            Some(super::sse2::first_max_dot8_f64(vertices.try_into().ok()?, d))
+        }
+    }
+}
+
+/// Support scans of eight vertices in SSE2, which every x86-64 processor has.
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+#[allow(unsafe_code)]
+mod sse2 {
+    use super::V2;
+    use core::arch::x86_64::*;
+
+    /// The first lane set in `mask`, or 0 if none is (never, for finite dots).
+    #[inline(always)]
+    fn first_lane(mask: i32) -> usize {
+        if mask == 0 {
+            0
+        } else {
+            mask.trailing_zeros() as usize
+        }
+    }
+
+    #[inline(always)]
+    pub fn first_max_dot8_f32(v: &[V2<f32>; 8], d: V2<f32>) -> usize {
+        // SAFETY: the module is compiled only where the build enables sse2
+        // (`cfg(target_feature = "sse2")`), so the processor has it.
+        unsafe { dots8_f32(v, d) }
+    }
+
+    #[inline(always)]
+    pub fn first_max_dot8_f64(v: &[V2<f64>; 8], d: V2<f64>) -> usize {
+        // SAFETY: as above.
+        unsafe { dots8_f64(v, d) }
+    }
+
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn dots8_f32(v: &[V2<f32>; 8], d: V2<f32>) -> usize {
+        let (dx, dy) = (_mm_set1_ps(d.x), _mm_set1_ps(d.y));
+        let dots = |k: usize| {
+            let xs = _mm_setr_ps(v[k].x, v[k + 1].x, v[k + 2].x, v[k + 3].x);
+            let ys = _mm_setr_ps(v[k].y, v[k + 1].y, v[k + 2].y, v[k + 3].y);
+            _mm_add_ps(_mm_mul_ps(xs, dx), _mm_mul_ps(ys, dy))
+        };
+        let (low, high) = (dots(0), dots(4));
+        let m = _mm_max_ps(low, high);
+        let m = _mm_max_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
+        let m = _mm_max_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m));
+        first_lane(_mm_movemask_ps(_mm_cmpeq_ps(low, m)) | (_mm_movemask_ps(_mm_cmpeq_ps(high, m)) << 4))
+    }
+
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn dots8_f64(v: &[V2<f64>; 8], d: V2<f64>) -> usize {
+        let dd = _mm_setr_pd(d.x, d.y);
+        // The products (x dx, y dy) of two vertices, summed across: their dots.
+        let dots = |k: usize| {
+            let p = _mm_mul_pd(_mm_setr_pd(v[k].x, v[k].y), dd);
+            let q = _mm_mul_pd(_mm_setr_pd(v[k + 1].x, v[k + 1].y), dd);
+            _mm_add_pd(_mm_unpacklo_pd(p, q), _mm_unpackhi_pd(p, q))
+        };
+        let (a, b, c, e) = (dots(0), dots(2), dots(4), dots(6));
+        let m = _mm_max_pd(_mm_max_pd(a, b), _mm_max_pd(c, e));
+        let m = _mm_max_pd(m, _mm_shuffle_pd::<0b01>(m, m));
+        let lanes = |x: __m128d, at: u32| _mm_movemask_pd(_mm_cmpeq_pd(x, m)) << at;
+        first_lane(lanes(a, 0) | lanes(b, 2) | lanes(c, 4) | lanes(e, 6))
     }
 }
 

@@ -1,6 +1,7 @@
 //! The polygon support scan against exact integer arithmetic. Small
-//! capacities scan every slot on hosts (the unused ones copy vertex 0) and
-//! keep the leader by a select; larger ones scan the vertices alone or walk.
+//! capacities scan every slot on hosts (the unused ones copy vertex 0), eight
+//! slots in SIMD on x86-64, and keep the leader by a select; larger ones scan
+//! the vertices alone or walk.
 //! Each must give a vertex of exactly the largest dot product, for every
 //! vertex count up to the capacity; without a hint (a full scan, which keeps
 //! the first of tied vertices) both capacities give the same vertex and id.
@@ -14,11 +15,13 @@ use proptest::prelude::*;
 
 /// Integer points (exact in f32 and f64), their hull, and integer directions:
 /// every dot product below is exact in i64.
-fn hull_and_directions() -> impl Strategy<Value = (Vec<(i64, i64)>, Vec<(i64, i64)>)> {
+type Points = Vec<(i64, i64)>;
+
+fn hull_and_directions() -> impl Strategy<Value = (Points, Points)> {
     (prop::collection::vec((-40i64..=40, -40i64..=40), 3..24), prop::collection::vec((-9i64..=9, -9i64..=9), 1..24))
         .prop_map(|(points, dirs)| {
             let hull = geo::integer_hull(points);
-            let dirs: Vec<(i64, i64)> = dirs.into_iter().filter(|&d| d != (0, 0)).collect();
+            let dirs: Points = dirs.into_iter().filter(|&d| d != (0, 0)).collect();
             (hull, dirs)
         })
         .prop_filter("a polygon of at most 8 vertices", |(h, d)| (3..=8).contains(&h.len()) && !d.is_empty())

@@ -208,6 +208,9 @@ fn scan_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
         }
         return best;
     }
+    if let Some(i) = R::first_max_dot8(vertices, d) {
+        return (i, at(vertices, i));
+    }
     let mut best_i = 0;
     for (i, &v) in vertices.iter().enumerate() {
         let dot = v.dot(d);
