@@ -11,9 +11,9 @@ use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
-use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation};
+use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 use crate::shape::SupportMap;
-use crate::simplex::{Simplex, Witness};
+use crate::simplex::{Simplex, Vertex, Witness};
 use crate::transform::Transform;
 
 /// The narrow-phase detector: configuration plus a penetration solver (EPA
@@ -47,6 +47,9 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
+        if pair.point_cores() {
+            return point_cores_overlap(&pair, self.config.detect_epsilon());
+        }
         let (intersecting, iterations, status) = intersect(
             &pair,
             self.config.max_detect_iterations(),
@@ -65,6 +68,11 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         let pair = Pair::new(a, ta, b, tb);
+        if pair.point_cores() {
+            if let Some(ref core) = PointCores::new(&pair) {
+                return separation(&pair, &core.separation());
+            }
+        }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
         match pair.core_distance(&mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreProximity::Overlapping { .. } => None,
@@ -82,6 +90,11 @@ impl<R: Real, P> Gjk<R, P> {
         P: PenetrationSolver<R>,
     {
         let pair = Pair::new(a, ta, b, tb);
+        if pair.point_cores() {
+            if let Some(ref core) = PointCores::new(&pair) {
+                return rounded_overlap(&pair, &core.separation());
+            }
+        }
         // GJK and the closed form for rounded shapes in functions of their
         // own: this frame keeps only the pair and the enclosing simplex's
         // points while the solver's polytope is on the stack. Matched by
@@ -139,6 +152,58 @@ impl<R: Real, P> Gjk<R, P> {
             other => other,
         };
         RayCast { outcome, ..local }
+    }
+}
+
+/// The intersection test of two point cores: GJK's verdict, iteration count
+/// and status (its first support is the centers' offset, and its second
+/// repeats it), without its loop.
+fn point_cores_overlap<R, A, B>(pair: &Pair<'_, R, A, B>, detect_epsilon: R) -> Detection
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let margin = if detect_epsilon == R::ZERO { R::ZERO } else { detect_epsilon * pair.scale() };
+    let reach = pair.radius() + margin;
+    let intersecting = pair.centers.length_squared() <= reach * reach;
+    Detection { intersecting, iterations: if intersecting { 1 } else { 2 }, status: Status::Converged }
+}
+
+/// What GJK's distance loop ends with on two point cores that are apart: the
+/// one-vertex simplex of their offset, found twice (two iterations, the
+/// repeat converges). Built here, its closest point, bounds and witness
+/// points are the loop's to the bit, and the queries finish as they do after
+/// the loop. `None` for coincident cores, which the loop calls overlapping.
+struct PointCores<R: Real> {
+    simplex: Simplex<R, Witness<R>>,
+    v: V2<R>,
+    lower_bound: R,
+}
+
+impl<R: Real> PointCores<R> {
+    fn new<A, B>(pair: &Pair<'_, R, A, B>) -> Option<Self>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let w = pair.support(pair.first_direction);
+        let vv = w.w.length_squared();
+        if vv == R::ZERO {
+            return None;
+        }
+        let lower_bound = R::ZERO.max(w.w.dot(w.w) / vv.sqrt());
+        Some(Self { simplex: Simplex::new(Vertex::from_minkowski(&w)), v: w.w, lower_bound })
+    }
+
+    fn separation(&self) -> CoreSeparation<'_, R, Witness<R>> {
+        CoreSeparation {
+            simplex: &self.simplex,
+            v: self.v,
+            lower_bound: self.lower_bound,
+            iterations: 2,
+            status: Status::Converged,
+        }
     }
 }
 

@@ -170,6 +170,24 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.support(d)
     }
 
+    /// Whether both cores are single points (circles), asked only on hosts
+    /// (where skipping GJK's loop spares mispredicted branches; a firmware
+    /// keeps its code as it is) and only where the shapes' types are known
+    /// when the program is compiled: a polygon's constant zero radius then
+    /// drops the question, and trait objects never ask it. A shape whose
+    /// bounding radius, measured from a point of its core, is no more than
+    /// its radius has no other core point: that point would put part of the
+    /// shape farther out.
+    #[inline(always)]
+    pub fn point_cores(&self) -> bool {
+        cfg!(not(target_os = "none"))
+            && Self::shapes_known()
+            && self.a.radius() > R::ZERO
+            && self.b.radius() > R::ZERO
+            && self.a.bounding_radius() <= self.a.radius()
+            && self.b.bounding_radius() <= self.b.radius()
+    }
+
     /// Whether both shapes' types are known when the program is compiled:
     /// false for trait objects (`&dyn SupportMap`, a wide pointer), where
     /// an inlined support call can drop nothing and one shared copy
