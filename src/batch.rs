@@ -64,6 +64,8 @@ pub struct EpaVec<R: Real> {
 }
 
 impl<R: Real> PenetrationSolver<R> for EpaVec<R> {
+    const SEPARATING_AXES: bool = true;
+
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
         let mut polytope = Vec::with_capacity(16);
         expand(&mut polytope, &self.config, difference, simplex)

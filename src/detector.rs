@@ -50,6 +50,13 @@ impl<R: Real, P> Gjk<R, P> {
         if pair.point_cores() {
             return point_cores_overlap(&pair, self.config.detect_epsilon());
         }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if self.config.detect_epsilon() == R::ZERO {
+            if let Some((pa, pb)) = pair.small_polygons() {
+                let intersecting = !crate::sat::Axes::new(&pair, pa, pb).separated();
+                return Detection { intersecting, iterations: 1, status: Status::Converged };
+            }
+        }
         let (intersecting, iterations, status) = intersect(
             &pair,
             self.config.max_detect_iterations(),
@@ -93,6 +100,23 @@ impl<R: Real, P> Gjk<R, P> {
         if pair.point_cores() {
             if let Some(ref core) = PointCores::new(&pair) {
                 return rounded_overlap(&pair, &core.separation());
+            }
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if P::SEPARATING_AXES {
+            if let Some((pa, pb)) = pair.small_polygons() {
+                let axes = crate::sat::Axes::new(&pair, pa, pb);
+                if axes.separated() {
+                    return None;
+                }
+                let (depth, normal) = axes.penetration();
+                return Some(Penetration {
+                    normal: pair.to_world_vector(normal),
+                    depth,
+                    error_bound: R::ZERO,
+                    iterations: 1,
+                    status: Status::Converged,
+                });
             }
         }
         // GJK and the closed form for rounded shapes in functions of their

@@ -32,6 +32,12 @@ pub struct PenetrationEstimate<R: Real> {
 /// Minkowski difference of two overlapping cores and GJK's final simplex
 /// (1 to 3 points enclosing or touching the origin), find the depth.
 pub trait PenetrationSolver<R: Real> {
+    /// Whether two polygons of at most eight vertices, whose types are known
+    /// when the program is compiled, may be answered by their separating
+    /// axes instead of [`solve`](Self::solve) (exact, no iteration; on hosts
+    /// only). EPA allows it; a solver of your own is asked unless it says so.
+    const SEPARATING_AXES: bool = false;
+
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R>;
 }
 
@@ -62,6 +68,8 @@ impl<R: Real, const N: usize> Epa<R, N> {
 }
 
 impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
+    const SEPARATING_AXES: bool = true;
+
     // Not inlined: the polytope and EPA's working values then live in this
     // frame alone, not in one frame with GJK's (the peak stack of a
     // penetration query on a microcontroller).

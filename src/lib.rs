@@ -50,6 +50,8 @@ mod minkowski;
 mod ray;
 mod real;
 mod result;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod sat;
 pub mod shape;
 mod simplex;
 mod transform;

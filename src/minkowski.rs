@@ -50,6 +50,10 @@ pub trait MinkowskiDifference<R: Real> {
     }
 }
 
+/// A polytope core's vertices, relative to its reference point.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) type Vertices<'s, R> = &'s [V2<R>];
+
 /// Two shapes placed relative to each other.
 pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     a: &'s A,
@@ -210,6 +214,26 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         // NO_FEATURE (u32::MAX) and vertex indices past 16 bits both land here.
         let id = if ia >= 0xFFFF || ib >= 0xFFFF { NO_ID } else { (ia << 16) | ib };
         MinkowskiVertex { w: b - a, a, b, id }
+    }
+
+    /// The two cores as small polygons ([`SupportMap::small_polygon`]),
+    /// where both shapes' types are known when the program is compiled
+    /// (through trait objects, GJK and the penetration solver answer).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn small_polygons(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
+        if !Self::shapes_known() {
+            return None;
+        }
+        let (a, b): (&'s A, &'s B) = (self.a, self.b);
+        Some((a.small_polygon()?.vertices, b.small_polygon()?.vertices))
+    }
+
+    /// A point of B's frame (relative to its reference point) in the pair
+    /// frame.
+    #[inline(always)]
+    pub fn b_to_pair(&self, p: V2<R>) -> V2<R> {
+        self.rotate(p) + self.offset
     }
 
     /// A point of the pair frame in world coordinates.

@@ -40,9 +40,30 @@ mod sealed {
             let _ = (vertices, d);
             None
         }
+
+        /// The smallest dot product with `d` of eight vertices given by
+        /// their coordinates: in SIMD where the target has it (the
+        /// separating-axis test's inner loop), a scalar scan elsewhere.
+        #[inline(always)]
+        fn min_dot8(xs: &[Self; 8], ys: &[Self; 8], d: super::V2<Self>) -> Self
+        where
+            Self: super::Real,
+        {
+            let mut least = Self::INFINITY;
+            for (&x, &y) in xs.iter().zip(ys) {
+                let dot = x * d.x + y * d.y;
+                least = core::hint::select_unpredictable(dot < least, dot, least);
+            }
+            least
+        }
     }
     impl Sealed for f32 {
         const FLAT_GJK: bool = false;
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn min_dot8(xs: &[f32; 8], ys: &[f32; 8], d: super::V2<f32>) -> f32 {
+            super::sse2::min_dot8_f32(xs, ys, d)
+        }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn first_max_dot8(vertices: &[super::V2<f32>], d: super::V2<f32>) -> Option<usize> {
@@ -51,6 +72,11 @@ mod sealed {
     }
     impl Sealed for f64 {
         const FLAT_GJK: bool = cfg!(target_os = "none");
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn min_dot8(xs: &[f64; 8], ys: &[f64; 8], d: super::V2<f64>) -> f64 {
+            super::sse2::min_dot8_f64(xs, ys, d)
+        }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn first_max_dot8(vertices: &[super::V2<f64>], d: super::V2<f64>) -> Option<usize> {
@@ -89,16 +115,79 @@ mod sse2 {
         unsafe { dots8_f64(v, d) }
     }
 
+    #[inline(always)]
+    pub fn min_dot8_f32(xs: &[f32; 8], ys: &[f32; 8], d: V2<f32>) -> f32 {
+        // SAFETY: as above.
+        unsafe { least8_f32(xs, ys, d) }
+    }
+
+    #[inline(always)]
+    pub fn min_dot8_f64(xs: &[f64; 8], ys: &[f64; 8], d: V2<f64>) -> f64 {
+        // SAFETY: as above.
+        unsafe { least8_f64(xs, ys, d) }
+    }
+
+    /// The dots of vertices 0 to 3 and 4 to 7, four lanes each.
     #[target_feature(enable = "sse2")]
     #[inline]
-    fn dots8_f32(v: &[V2<f32>; 8], d: V2<f32>) -> usize {
+    fn quads_f32(v: &[V2<f32>; 8], d: V2<f32>) -> (__m128, __m128) {
         let (dx, dy) = (_mm_set1_ps(d.x), _mm_set1_ps(d.y));
         let dots = |k: usize| {
             let xs = _mm_setr_ps(v[k].x, v[k + 1].x, v[k + 2].x, v[k + 3].x);
             let ys = _mm_setr_ps(v[k].y, v[k + 1].y, v[k + 2].y, v[k + 3].y);
             _mm_add_ps(_mm_mul_ps(xs, dx), _mm_mul_ps(ys, dy))
         };
+        (dots(0), dots(4))
+    }
+
+    /// The dots of vertex pairs (0, 1), (2, 3), (4, 5), (6, 7), two lanes each.
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn pairs_f64(v: &[V2<f64>; 8], d: V2<f64>) -> [__m128d; 4] {
+        let dd = _mm_setr_pd(d.x, d.y);
+        // The products (x dx, y dy) of two vertices, summed across: their dots.
+        let dots = |k: usize| {
+            let p = _mm_mul_pd(_mm_setr_pd(v[k].x, v[k].y), dd);
+            let q = _mm_mul_pd(_mm_setr_pd(v[k + 1].x, v[k + 1].y), dd);
+            _mm_add_pd(_mm_unpacklo_pd(p, q), _mm_unpackhi_pd(p, q))
+        };
+        [dots(0), dots(2), dots(4), dots(6)]
+    }
+
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn least8_f32(xs: &[f32; 8], ys: &[f32; 8], d: V2<f32>) -> f32 {
+        let (dx, dy) = (_mm_set1_ps(d.x), _mm_set1_ps(d.y));
+        let dots = |k: usize| {
+            let x = _mm_setr_ps(xs[k], xs[k + 1], xs[k + 2], xs[k + 3]);
+            let y = _mm_setr_ps(ys[k], ys[k + 1], ys[k + 2], ys[k + 3]);
+            _mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy))
+        };
         let (low, high) = (dots(0), dots(4));
+        let m = _mm_min_ps(low, high);
+        let m = _mm_min_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
+        let m = _mm_min_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m));
+        _mm_cvtss_f32(m)
+    }
+
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn least8_f64(xs: &[f64; 8], ys: &[f64; 8], d: V2<f64>) -> f64 {
+        let (dx, dy) = (_mm_set1_pd(d.x), _mm_set1_pd(d.y));
+        let dots = |k: usize| {
+            let x = _mm_setr_pd(xs[k], xs[k + 1]);
+            let y = _mm_setr_pd(ys[k], ys[k + 1]);
+            _mm_add_pd(_mm_mul_pd(x, dx), _mm_mul_pd(y, dy))
+        };
+        let (a, b, c, e) = (dots(0), dots(2), dots(4), dots(6));
+        let m = _mm_min_pd(_mm_min_pd(a, b), _mm_min_pd(c, e));
+        _mm_cvtsd_f64(_mm_min_pd(m, _mm_shuffle_pd::<0b01>(m, m)))
+    }
+
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn dots8_f32(v: &[V2<f32>; 8], d: V2<f32>) -> usize {
+        let (low, high) = quads_f32(v, d);
         let m = _mm_max_ps(low, high);
         let m = _mm_max_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
         let m = _mm_max_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m));
@@ -108,14 +197,7 @@ mod sse2 {
     #[target_feature(enable = "sse2")]
     #[inline]
     fn dots8_f64(v: &[V2<f64>; 8], d: V2<f64>) -> usize {
-        let dd = _mm_setr_pd(d.x, d.y);
-        // The products (x dx, y dy) of two vertices, summed across: their dots.
-        let dots = |k: usize| {
-            let p = _mm_mul_pd(_mm_setr_pd(v[k].x, v[k].y), dd);
-            let q = _mm_mul_pd(_mm_setr_pd(v[k + 1].x, v[k + 1].y), dd);
-            _mm_add_pd(_mm_unpacklo_pd(p, q), _mm_unpackhi_pd(p, q))
-        };
-        let (a, b, c, e) = (dots(0), dots(2), dots(4), dots(6));
+        let [a, b, c, e] = pairs_f64(v, d);
         let m = _mm_max_pd(_mm_max_pd(a, b), _mm_max_pd(c, e));
         let m = _mm_max_pd(m, _mm_shuffle_pd::<0b01>(m, m));
         let lanes = |x: __m128d, at: u32| _mm_movemask_pd(_mm_cmpeq_pd(x, m)) << at;

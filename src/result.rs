@@ -30,6 +30,8 @@ impl Status {
 pub struct Detection {
     /// Whether the shapes overlap (touching counts as overlapping).
     pub intersecting: bool,
+    /// GJK iterations (1 for two small polygons answered by their
+    /// separating axes, in one pass).
     pub iterations: u32,
     /// `IterationLimit` means the verdict is a best guess.
     pub status: Status,
@@ -66,7 +68,8 @@ pub struct Penetration<R: Real> {
     /// polytope filled up it can be far wider than the actual error (the depth
     /// is then polished to the configured epsilon, the bound is not).
     pub error_bound: R,
-    /// GJK and EPA iterations together.
+    /// GJK and EPA iterations together (1 for two small polygons answered by
+    /// their separating axes, in one pass).
     pub iterations: u32,
     pub status: Status,
 }

@@ -44,6 +44,10 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn support_feature(&self, d: R::Vector, near: u32) -> (R::Vector, u32) {
         self.0.support_feature(d, near)
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn small_polygon(&self) -> Option<super::SmallPolygon<'_, R>> {
+        self.0.small_polygon()
+    }
     fn is_polytope(&self) -> bool {
         true
     }

@@ -1,0 +1,103 @@
+//! The separating-axis test of two small convex polygons (as dyn4j's `Sat`):
+//! two polygons are apart exactly when one edge normal of either separates
+//! them, and when they overlap, the least overlap over those normals is the
+//! penetration depth. Eight vertices a side make it 16 axes of 8 products,
+//! a fixed amount of arithmetic with no branch on the geometry: on hosts it
+//! beats GJK and EPA, whose branches a predictor cannot learn across pairs.
+//!
+//! Both polygons are worked on in A's frame, relative to A's reference point
+//! (B's vertices placed there once), as every query does.
+
+use crate::minkowski::Pair;
+use crate::real::{Real, V2};
+use crate::shape::{SupportMap, SMALL_POLYGON_MAX};
+
+const M: usize = SMALL_POLYGON_MAX;
+
+/// Up to [`M`] vertices, the unused slots copies of the first: a minimum
+/// over every slot is then the minimum over the vertices. Their coordinates
+/// also apart, as the SIMD products read them.
+struct Padded<R> {
+    v: [V2<R>; M],
+    xs: [R; M],
+    ys: [R; M],
+    len: usize,
+}
+
+impl<R: Real> Padded<R> {
+    fn new(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>) -> Self {
+        let first = place(vertices.first().copied().unwrap_or_default());
+        let v: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).map_or(first, |&p| place(p)));
+        let (xs, ys) = (core::array::from_fn(|i| v[i].x), core::array::from_fn(|i| v[i].y));
+        Self { v, xs, ys, len: vertices.len().min(M) }
+    }
+
+    /// The outward normal of edge `i` (not unit): the edge turned clockwise,
+    /// the polygon being counter-clockwise.
+    #[inline(always)]
+    fn normal(&self, i: usize) -> V2<R> {
+        let next = if i + 1 < self.len { self.v[(i + 1) % M] } else { self.v[0] };
+        (next - self.v[i % M]).perp_cw()
+    }
+}
+
+/// For every edge slot of `own`: the outward normal (not unit) and the least
+/// dot product of `other`'s vertices with it, measured from the edge (how
+/// far `other` reaches past the edge's line, times the normal's length).
+/// Slots past the last edge get a separation of minus infinity.
+#[inline(always)]
+fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
+    let normals: [V2<R>; M] = core::array::from_fn(|i| own.normal(i));
+    let least = core::array::from_fn(|i| {
+        let n = normals[i];
+        let reach = R::min_dot8(&other.xs, &other.ys, n) - n.dot(own.v[i]);
+        core::hint::select_unpredictable(i < own.len, reach, -R::INFINITY)
+    });
+    (normals, least)
+}
+
+/// What the separating axes say about two polygon cores.
+pub(crate) struct Axes<R> {
+    normals: [V2<R>; 2 * M],
+    least: [R; 2 * M],
+}
+
+impl<R: Real> Axes<R> {
+    /// The separating axes of the pair's two small polygons (`a`, `b`, as
+    /// [`Pair::small_polygons`] gives them).
+    pub fn new<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Self
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let pa = Padded::new(a, |p| p);
+        let pb = Padded::new(b, |p| pair.b_to_pair(p));
+        let (na, la) = faces(&pa, &pb);
+        let (nb, lb) = faces(&pb, &pa);
+        // B's face normals point away from B, towards A: turned round, every
+        // normal points from A towards B.
+        let normals = core::array::from_fn(|i| if i < M { na[i] } else { -nb[i - M] });
+        let least = core::array::from_fn(|i| if i < M { la[i] } else { lb[i - M] });
+        Self { normals, least }
+    }
+
+    /// Whether an axis separates the polygons (touching does not).
+    pub fn separated(&self) -> bool {
+        self.least.iter().fold(false, |any, &s| any | (s > R::ZERO))
+    }
+
+    /// The least overlap along a unit normal, and that normal (from A
+    /// towards B): the penetration depth and normal of overlapping
+    /// polygons. Ties go to the first axis, A's before B's.
+    pub fn penetration(&self) -> (R, V2<R>) {
+        let lengths: [R; 2 * M] = core::array::from_fn(|i| self.normals[i].length_squared().sqrt());
+        let separation: [R; 2 * M] = core::array::from_fn(|i| self.least[i] / lengths[i]);
+        let mut best = 0;
+        for i in 1..2 * M {
+            best = core::hint::select_unpredictable(separation[i] > separation[best % (2 * M)], i, best);
+        }
+        let best = best % (2 * M);
+        // From zero: a separation of -0 is a depth of +0.
+        (R::ZERO - separation[best], self.normals[best] * (R::ONE / lengths[best]))
+    }
+}
