@@ -27,13 +27,19 @@ mod sealed {
         /// inlining.
         const FLAT_GJK: bool;
 
-        /// The index of the first of exactly eight vertices with the largest
-        /// dot product with `d`, in SIMD where the target has it (x86-64's
-        /// SSE2): no branch at all. `None` elsewhere, or for another count,
-        /// where a scalar scan does it. The products round as the scalar
-        /// ones do, and ties go to the first, so the vertex is the same.
+        /// Whether [`first_max_dot`](Self::first_max_dot) scans in SIMD,
+        /// which makes a scan of a few dozen vertices cheaper than a walk or
+        /// a search whose branches a predictor cannot learn.
+        const SIMD_SCAN: bool = false;
+
+        /// The index of the first vertex with the largest dot product with
+        /// `d`, in SIMD where the target has it (x86-64's SSE2): eight
+        /// vertices with no branch at all, others eight (f32) or two (f64) at
+        /// a time with one branch a chunk. `None` elsewhere, where a scalar
+        /// scan does it. The products round as the scalar ones do, and ties
+        /// go to the first, so the vertex is the same.
         #[inline(always)]
-        fn first_max_dot8(vertices: &[super::V2<Self>], d: super::V2<Self>) -> Option<usize>
+        fn first_max_dot(vertices: &[super::V2<Self>], d: super::V2<Self>) -> Option<usize>
         where
             Self: Sized,
         {
@@ -65,9 +71,14 @@ mod sealed {
             super::sse2::min_dot8_f32(xs, ys, d)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        const SIMD_SCAN: bool = true;
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
-        fn first_max_dot8(vertices: &[super::V2<f32>], d: super::V2<f32>) -> Option<usize> {
-            Some(super::sse2::first_max_dot8_f32(vertices.try_into().ok()?, d))
+        fn first_max_dot(vertices: &[super::V2<f32>], d: super::V2<f32>) -> Option<usize> {
+            Some(match vertices.try_into() {
+                Ok(eight) => super::sse2::first_max_dot8_f32(eight, d),
+                Err(_) => super::sse2::first_max_dot_f32(vertices, d),
+            })
         }
     }
     impl Sealed for f64 {
@@ -78,9 +89,14 @@ mod sealed {
             super::sse2::min_dot8_f64(xs, ys, d)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        const SIMD_SCAN: bool = true;
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
-        fn first_max_dot8(vertices: &[super::V2<f64>], d: super::V2<f64>) -> Option<usize> {
-            Some(super::sse2::first_max_dot8_f64(vertices.try_into().ok()?, d))
+        fn first_max_dot(vertices: &[super::V2<f64>], d: super::V2<f64>) -> Option<usize> {
+            Some(match vertices.try_into() {
+                Ok(eight) => super::sse2::first_max_dot8_f64(eight, d),
+                Err(_) => super::sse2::first_max_dot_f64(vertices, d),
+            })
         }
     }
 }
@@ -113,6 +129,108 @@ mod sse2 {
     pub fn first_max_dot8_f64(v: &[V2<f64>; 8], d: V2<f64>) -> usize {
         // SAFETY: as above.
         unsafe { dots8_f64(v, d) }
+    }
+
+    #[inline(always)]
+    pub fn first_max_dot_f32(v: &[V2<f32>], d: V2<f32>) -> usize {
+        // SAFETY: as above.
+        unsafe { running_max_f32(v, d) }
+    }
+
+    #[inline(always)]
+    pub fn first_max_dot_f64(v: &[V2<f64>], d: V2<f64>) -> usize {
+        // SAFETY: as above.
+        unsafe { running_max_f64(v, d) }
+    }
+
+    /// Of lanes (value, index), the largest value at the smallest index; then
+    /// the vertices past the last whole chunk, from `tail_start` on, which
+    /// replace it only when strictly larger: the first maximum overall.
+    #[inline(always)]
+    fn finish<R: crate::Real>(lanes: &[(R, usize)], tail: &[V2<R>], tail_start: usize, d: V2<R>) -> usize {
+        let (mut top, mut top_i) = (-R::INFINITY, 0usize);
+        for &(value, index) in lanes {
+            let better = value > top || (value == top && index < top_i);
+            top = core::hint::select_unpredictable(better, value, top);
+            top_i = core::hint::select_unpredictable(better, index, top_i);
+        }
+        for (j, p) in tail.iter().enumerate() {
+            let dot = p.dot(d);
+            let better = dot > top;
+            top = core::hint::select_unpredictable(better, dot, top);
+            top_i = core::hint::select_unpredictable(better, tail_start + j, top_i);
+        }
+        top_i
+    }
+
+    /// Two sets of four lanes (vertices 8k to 8k+3 and 8k+4 to 8k+7: two
+    /// chains of maxima, half as long), each lane the first maximum of its
+    /// own vertices (strictly larger replaces), with its index.
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn running_max_f32(v: &[V2<f32>], d: V2<f32>) -> usize {
+        let dd = _mm_setr_ps(d.x, d.y, d.x, d.y);
+        let pair = |p: &[V2<f32>]| _mm_mul_ps(_mm_setr_ps(p[0].x, p[0].y, p[1].x, p[1].y), dd);
+        // Products (x dx, y dy, ...) of vertices 0 to 3, summed in pairs.
+        let dots = |c: &[V2<f32>]| {
+            let (low, high) = (pair(&c[..2]), pair(&c[2..4]));
+            _mm_add_ps(_mm_shuffle_ps::<0b10_00_10_00>(low, high), _mm_shuffle_ps::<0b11_01_11_01>(low, high))
+        };
+        let mut best = [_mm_set1_ps(f32::NEG_INFINITY); 2];
+        let mut best_i = [_mm_setzero_si128(); 2];
+        let mut index = [_mm_setr_epi32(0, 1, 2, 3), _mm_setr_epi32(4, 5, 6, 7)];
+        let mut chunks = v.chunks_exact(8);
+        for c in &mut chunks {
+            for k in 0..2 {
+                let dots = dots(&c[4 * k..4 * k + 4]);
+                let greater = _mm_castps_si128(_mm_cmpgt_ps(dots, best[k]));
+                best[k] = _mm_max_ps(dots, best[k]);
+                best_i[k] = _mm_or_si128(_mm_and_si128(greater, index[k]), _mm_andnot_si128(greater, best_i[k]));
+                index[k] = _mm_add_epi32(index[k], _mm_set1_epi32(8));
+            }
+        }
+        let value = |x: __m128, k: usize| match k {
+            0 => _mm_cvtss_f32(x),
+            1 => _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(x, x)),
+            2 => _mm_cvtss_f32(_mm_shuffle_ps::<0b10_10_10_10>(x, x)),
+            _ => _mm_cvtss_f32(_mm_shuffle_ps::<0b11_11_11_11>(x, x)),
+        };
+        let index_of = |x: __m128i, k: usize| match k {
+            0 => _mm_cvtsi128_si32(x),
+            1 => _mm_cvtsi128_si32(_mm_shuffle_epi32::<0b01_01_01_01>(x)),
+            2 => _mm_cvtsi128_si32(_mm_shuffle_epi32::<0b10_10_10_10>(x)),
+            _ => _mm_cvtsi128_si32(_mm_shuffle_epi32::<0b11_11_11_11>(x)),
+        } as u32 as usize;
+        let lanes: [(f32, usize); 8] =
+            core::array::from_fn(|k| (value(best[k / 4], k % 4), index_of(best_i[k / 4], k % 4)));
+        let tail = chunks.remainder();
+        finish(&lanes, tail, v.len() - tail.len(), d)
+    }
+
+    /// Two lanes, as each set of [`running_max_f32`].
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn running_max_f64(v: &[V2<f64>], d: V2<f64>) -> usize {
+        let (dx, dy) = (_mm_set1_pd(d.x), _mm_set1_pd(d.y));
+        let mut best = _mm_set1_pd(f64::NEG_INFINITY);
+        let mut best_i = _mm_setzero_si128();
+        let mut index = _mm_set_epi64x(1, 0);
+        let mut chunks = v.chunks_exact(2);
+        for c in &mut chunks {
+            let xs = _mm_setr_pd(c[0].x, c[1].x);
+            let ys = _mm_setr_pd(c[0].y, c[1].y);
+            let dots = _mm_add_pd(_mm_mul_pd(xs, dx), _mm_mul_pd(ys, dy));
+            let greater = _mm_castpd_si128(_mm_cmpgt_pd(dots, best));
+            best = _mm_max_pd(dots, best);
+            best_i = _mm_or_si128(_mm_and_si128(greater, index), _mm_andnot_si128(greater, best_i));
+            index = _mm_add_epi64(index, _mm_set1_epi64x(2));
+        }
+        let high = |x: __m128d| _mm_cvtsd_f64(_mm_unpackhi_pd(x, x));
+        let index_of = |x: __m128i| _mm_cvtsi128_si64(x) as u64 as usize;
+        let lanes =
+            [(_mm_cvtsd_f64(best), index_of(best_i)), (high(best), index_of(_mm_unpackhi_epi64(best_i, best_i)))];
+        let tail = chunks.remainder();
+        finish(&lanes, tail, v.len() - tail.len(), d)
     }
 
     #[inline(always)]

@@ -1,10 +1,11 @@
 //! The polygon support scan against exact integer arithmetic. Small
 //! capacities scan every slot on hosts (the unused ones copy vertex 0), eight
-//! slots in SIMD on x86-64, and keep the leader by a select; larger ones scan
-//! the vertices alone or walk.
-//! Each must give a vertex of exactly the largest dot product, for every
-//! vertex count up to the capacity; without a hint (a full scan, which keeps
-//! the first of tied vertices) both capacities give the same vertex and id.
+//! slots in SIMD on x86-64, up to 64 vertices four or two at a time; the rest
+//! keep the leader by a select, or walk and search. Each must give a vertex
+//! of exactly the largest dot product, for every vertex count up to the
+//! capacity; without a hint a scan keeps the first of tied vertices, so
+//! capacities 8 and 64 give the same vertex and id, and where 64 vertices or
+//! fewer are scanned, the first in the polygon's order.
 
 #[path = "common/geo.rs"]
 mod geo;
@@ -17,14 +18,21 @@ use proptest::prelude::*;
 /// every dot product below is exact in i64.
 type Points = Vec<(i64, i64)>;
 
-fn hull_and_directions() -> impl Strategy<Value = (Points, Points)> {
-    (prop::collection::vec((-40i64..=40, -40i64..=40), 3..24), prop::collection::vec((-9i64..=9, -9i64..=9), 1..24))
-        .prop_map(|(points, dirs)| {
+fn hull_and_directions(max_vertices: usize) -> impl Strategy<Value = (Points, Points)> {
+    // Scattered points give few hull vertices; points near a circle, many.
+    let scattered = prop::collection::vec((-40i64..=40, -40i64..=40), 3..24);
+    let round = prop::collection::vec((0.0f64..std::f64::consts::TAU, 0.9f64..1.0), 3..120).prop_map(|p| {
+        p.into_iter().map(|(t, r)| ((300.0 * r * t.cos()) as i64, (300.0 * r * t.sin()) as i64)).collect()
+    });
+    (prop_oneof![scattered, round], prop::collection::vec((-9i64..=9, -9i64..=9), 1..24))
+        .prop_map(|(points, dirs): (Points, Points)| {
             let hull = geo::integer_hull(points);
             let dirs: Points = dirs.into_iter().filter(|&d| d != (0, 0)).collect();
             (hull, dirs)
         })
-        .prop_filter("a polygon of at most 8 vertices", |(h, d)| (3..=8).contains(&h.len()) && !d.is_empty())
+        .prop_filter("a polygon within the capacity", move |(h, d)| {
+            (3..=max_vertices).contains(&h.len()) && !d.is_empty()
+        })
 }
 
 macro_rules! scan_suite {
@@ -32,7 +40,7 @@ macro_rules! scan_suite {
         proptest! {
             #![proptest_config(ProptestConfig::with_cases(400))]
             #[test]
-            fn $name((hull, dirs) in hull_and_directions()) {
+            fn $name((hull, dirs) in hull_and_directions(8)) {
                 let pts: Vec<$vec> = hull.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
                 let small = Polygon::<$r, 8>::new(&pts).unwrap();
                 let large = Polygon::<$r, 64>::new(&pts).unwrap();
@@ -62,3 +70,38 @@ macro_rules! scan_suite {
 
 scan_suite!(scan_matches_exact_support_f32, f32, Vec2);
 scan_suite!(scan_matches_exact_support_f64, f64, DVec2);
+
+macro_rules! first_of_ties_suite {
+    ($name:ident, $r:ty, $vec:ident) => {
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(400))]
+            #[test]
+            fn $name((hull, dirs) in hull_and_directions(64)) {
+                let pts: Vec<$vec> = hull.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
+                let polygon = Polygon::<$r, 64>::new(&pts).unwrap();
+                let stored: Vec<(i64, i64)> =
+                    (0..polygon.len()).map(|i| polygon.vertex(i).unwrap()).map(|v| (v.x as i64, v.y as i64)).collect();
+                for &(dx, dy) in &dirs {
+                    let d = $vec::new(dx as $r, dy as $r);
+                    let dots: Vec<i64> = stored.iter().map(|&(x, y)| x * dx + y * dy).collect();
+                    let best = *dots.iter().max().unwrap();
+                    let first = dots.iter().position(|&x| x == best).unwrap();
+                    let (_, id) = polygon.support_feature(d, NO_FEATURE);
+                    prop_assert_eq!(dots[id as usize], best, "not the exact support along {:?}", d);
+                    // x86-64 scans up to 64 vertices; elsewhere more than 24
+                    // are searched, which may land on any of tied vertices.
+                    if cfg!(target_arch = "x86_64") || stored.len() <= 24 {
+                        prop_assert_eq!(id as usize, first, "not the first of tied vertices along {:?}", d);
+                    }
+                    for near in [0, 5, 17, 40] {
+                        let (_, id) = polygon.support_feature(d, near);
+                        prop_assert_eq!(dots[id as usize], best, "hinted {}: not the exact support along {:?}", near, d);
+                    }
+                }
+            }
+        }
+    };
+}
+
+first_of_ties_suite!(scan_keeps_first_of_ties_f32, f32, Vec2);
+first_of_ties_suite!(scan_keeps_first_of_ties_f64, f64, DVec2);

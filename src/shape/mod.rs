@@ -210,7 +210,7 @@ pub(crate) const fn searched<const N: usize>(len: usize) -> bool {
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
-    if searched::<N>(vertices.len()) {
+    if searched::<N>(vertices.len()) && !simd_scanned::<R>(vertices.len()) {
         let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), vertices.len());
         return (k, at(vertices, k));
     }
@@ -237,7 +237,7 @@ fn scan_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
         }
         return best;
     }
-    if let Some(i) = R::first_max_dot8(vertices, d) {
+    if let Some(i) = R::first_max_dot(vertices, d) {
         return (i, at(vertices, i));
     }
     let mut best_i = 0;
@@ -301,6 +301,17 @@ pub(crate) fn first_reached(mut lo: usize, mut hi: usize, reached: impl Fn(usize
     lo
 }
 
+/// Up to this many vertices a polytope is scanned, not walked or searched,
+/// where the scan is SIMD: a branch-free pass over a few dozen vertices
+/// beats a walk or a binary search whose branches the predictor misses.
+const SIMD_SCAN_MAX: usize = 64;
+
+/// Whether `len` vertices are scanned in SIMD rather than walked or searched.
+#[inline(always)]
+fn simd_scanned<R: Real>(len: usize) -> bool {
+    R::SIMD_SCAN && len <= SIMD_SCAN_MAX
+}
+
 /// Up to this capacity a polytope is always scanned: firmware with small
 /// polygons then links no walk, and on hosts a branch-free scan of a few
 /// vertices beats a walk whose steps the branch predictor cannot guess.
@@ -315,7 +326,7 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
     d: V2<R>,
     start: u32,
 ) -> (usize, V2<R>) {
-    if N > SCAN_ONLY_MAX {
+    if N > SCAN_ONLY_MAX && !simd_scanned::<R>(vertices.len()) {
         walk_from::<R, N>(vertices, d, start)
     } else {
         polytope_support::<R, N>(vertices, d)
