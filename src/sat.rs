@@ -90,14 +90,31 @@ impl<R: Real> Axes<R> {
     /// towards B): the penetration depth and normal of overlapping
     /// polygons. Ties go to the first axis, A's before B's.
     pub fn penetration(&self) -> (R, V2<R>) {
-        let lengths: [R; 2 * M] = core::array::from_fn(|i| self.normals[i].length_squared().sqrt());
-        let separation: [R; 2 * M] = core::array::from_fn(|i| self.least[i] / lengths[i]);
+        // Lengths scaled by the larger component first, so the squares of a
+        // tiny polygon's normals neither underflow nor lose their digits.
+        let lengths: [R; 2 * M] = core::array::from_fn(|i| {
+            let n = self.normals[i];
+            let m = n.x.abs().max(n.y.abs());
+            let unit = if m > R::ZERO { n * (R::ONE / m) } else { V2::new(R::ONE, R::ZERO) };
+            m * unit.length_squared().sqrt()
+        });
+        let separation: [R; 2 * M] = core::array::from_fn(|i| {
+            let s = self.least[i] / lengths[i];
+            // A slot past the last edge (no normal) never leads.
+            if lengths[i] > R::ZERO {
+                s
+            } else {
+                -R::INFINITY
+            }
+        });
         let mut best = 0;
         for i in 1..2 * M {
             best = core::hint::select_unpredictable(separation[i] > separation[best % (2 * M)], i, best);
         }
         let best = best % (2 * M);
+        let normal = self.normals[best];
+        let normal = normal.try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
         // From zero: a separation of -0 is a depth of +0.
-        (R::ZERO - separation[best], self.normals[best] * (R::ONE / lengths[best]))
+        (R::ZERO - separation[best], normal)
     }
 }

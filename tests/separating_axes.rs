@@ -2,7 +2,7 @@
 //! program is compiled are answered by their separating axes on hosts (the
 //! intersection test, and penetration with EPA as the solver). Checked here
 //! against the exact oracle, as the GJK and EPA path is in tests/properties.rs:
-//! random convex polygons of 3 to 8 vertices at scales from 1e-3 to 1e4, near
+//! random convex polygons of 3 to 8 vertices at scales from 1e-13 to 1e4, near
 //! the origin and far from it, placed with and without rotation, about half
 //! of them overlapping and many touching. Every verdict beyond 8 eps L must
 //! be right, every depth within 8 eps L (plus the placement's rounding) of
@@ -28,7 +28,7 @@ struct Spec {
 }
 
 fn polygon() -> impl Strategy<Value = Spec> {
-    (prop::collection::vec((-20i64..=20, -20i64..=20), 3..14), -10i32..=13)
+    (prop::collection::vec((-20i64..=20, -20i64..=20), 3..14), -40i32..=13)
         .prop_map(|(points, scale_exp)| Spec { hull: geo::integer_hull(points), scale_exp })
         .prop_filter("3 to 8 vertices", |s| (3..=8).contains(&s.hull.len()))
 }
@@ -121,3 +121,32 @@ macro_rules! sat_suite {
 
 sat_suite!(separating_axes_match_the_oracle_f32, f32, Vec2);
 sat_suite!(separating_axes_match_the_oracle_f64, f64, DVec2);
+
+macro_rules! tiny_suite {
+    ($name:ident, $r:ty, $vec:ident) => {
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(500))]
+            /// Polygons so small that their edges' squares underflow: the
+            /// answers stay finite, the depth non-negative, the normal unit.
+            #[test]
+            fn $name(a in polygon(), b in polygon(), exp in -150i32..=-60, sx in -3i64..=3, sy in -3i64..=3) {
+                type R = $r;
+                let k = (2.0f64).powi(exp);
+                let pts = |s: &Spec| -> Vec<$vec> { s.hull.iter().map(|&(x, y)| $vec::new((x as f64 * k) as R, (y as f64 * k) as R)).collect() };
+                let (Ok(pa), Ok(pb)) = (Polygon::<R, 8>::new(&pts(&a)), Polygon::<R, 8>::new(&pts(&b))) else {
+                    return Ok(()); // rounded to no area: refused, rightly
+                };
+                let tb = Transform::<R>::from_translation($vec::new((sx as f64 * k) as R, (sy as f64 * k) as R)).unwrap();
+                let gjk = Gjk::<R>::new();
+                let _ = gjk.intersects(&pa, &Transform::IDENTITY, &pb, &tb);
+                if let Some(p) = gjk.penetration(&pa, &Transform::IDENTITY, &pb, &tb) {
+                    prop_assert!(p.depth.is_finite() && p.depth >= 0.0, "depth {}", p.depth);
+                    prop_assert!(p.normal.is_finite() && (p.normal.length() - 1.0).abs() < 1e-5, "normal {:?}", p.normal);
+                }
+            }
+        }
+    };
+}
+
+tiny_suite!(tiny_polygons_stay_finite_f32, f32, Vec2);
+tiny_suite!(tiny_polygons_stay_finite_f64, f64, DVec2);
