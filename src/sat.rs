@@ -92,12 +92,7 @@ impl<R: Real> Axes<R> {
     pub fn penetration(&self) -> (R, V2<R>) {
         // Lengths scaled by the larger component first, so the squares of a
         // tiny polygon's normals neither underflow nor lose their digits.
-        let lengths: [R; 2 * M] = core::array::from_fn(|i| {
-            let n = self.normals[i];
-            let m = n.x.abs().max(n.y.abs());
-            let unit = if m > R::ZERO { n * (R::ONE / m) } else { V2::new(R::ONE, R::ZERO) };
-            m * unit.length_squared().sqrt()
-        });
+        let lengths: [R; 2 * M] = core::array::from_fn(|i| scaled_length(self.normals[i]));
         let separation: [R; 2 * M] = core::array::from_fn(|i| {
             let s = self.least[i] / lengths[i];
             // A slot past the last edge (no normal) never leads.
@@ -116,5 +111,17 @@ impl<R: Real> Axes<R> {
         let normal = normal.try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
         // From zero: a separation of -0 is a depth of +0.
         (R::ZERO - separation[best], normal)
+    }
+}
+
+/// `|n|`, scaled by the larger component first, so the square of a tiny
+/// vector neither underflows nor loses its digits.
+#[inline(always)]
+fn scaled_length<R: Real>(n: V2<R>) -> R {
+    let m = n.x.abs().max(n.y.abs());
+    if m > R::ZERO {
+        m * (n * (R::ONE / m)).length_squared().sqrt()
+    } else {
+        R::ZERO
     }
 }
