@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! cargo run --release --example report              # a few minutes on 2 cores
-//! cargo run --release --example report -- --quick   # CI smoke run, well under 20 s
+//! cargo run --release --example report -- --quick   # CI smoke run, about a minute
 //! cargo run --release --example report -- --long    # 4x the cases, more repeats
 //! cargo run --release --example report -- --cases ../shared/workloads/poly8.txt --out report
 //! ```
@@ -20,7 +20,9 @@
 //! 8 eps L (eps of the precision under test): closer cases are too close to call.
 //!
 //! Writes `report.md` (the table, date, machine), `sweep.csv` and `sweep.svg`
-//! (error against time per query as settings vary) to `--out` (default `report/`).
+//! (error against time per query as settings vary) to `--out` (default
+//! `target/report/`, so a run leaves the checkout clean; `--out report` refreshes
+//! the committed copy).
 
 use gjk2d::{Capsule, Circle, Ellipse, EpaConfig, Gjk, GjkConfig, Polygon, Ray, RayOutcome, Real, Status, Transform};
 use gjk2d_oracle as oracle;
@@ -1877,7 +1879,7 @@ fn main() {
     let mut reps = 31;
     let mut mode = "default";
     let mut files: Vec<String> = Vec::new();
-    let mut out_dir = "report".to_string();
+    let mut out_dir = "target/report".to_string();
     let mut save_dir: Option<String> = None;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {

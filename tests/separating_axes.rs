@@ -56,7 +56,8 @@ macro_rules! sat_suite {
                 let (pa, pb) = (pts(&a, scale), pts(&b, b_scale));
                 let v = |p: Pt| $vec::new(p[0] as R, p[1] as R);
                 let poly_a = Polygon::<R, 8>::new(&pa.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
-                let poly_b = Polygon::<R, 8>::new(&pb.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
+                // B of a larger capacity: the axes take polygons by their vertex count.
+                let poly_b = Polygon::<R, 16>::new(&pb.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
                 let ta = Transform::<R>::from_translation(v(origin)).unwrap();
                 let shift = [origin[0] + sx as f64 * scale, origin[1] + sy as f64 * scale];
                 let tb = match angle {

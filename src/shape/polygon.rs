@@ -223,7 +223,7 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn small_polygon(&self) -> Option<super::SmallPolygon<'_, R>> {
-        (N <= super::SMALL_POLYGON_MAX).then(|| super::SmallPolygon { vertices: self.vertices() })
+        (self.len <= super::SMALL_POLYGON_MAX).then(|| super::SmallPolygon { vertices: self.vertices() })
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
