@@ -393,6 +393,35 @@ macro_rules! certified_suite {
                 Ok(())
             }
 
+            /// The cases: an ellipse of equal axes (a disk, so the
+            /// oracle answers exactly) around a circle's centre, where GJK
+            /// ran to its limit and penetration answered the circle's radius.
+            #[test]
+            fn round_ellipse_around_circle() {
+                let curved = if EPS > 1e-10 { 1e-6 } else { 1e-12 };
+                let cases = [
+                    (0.28880954, 0.036373023, 0.16243558, 0.26654297),
+                    (0.66774517, 0.022626728, -0.33718711, 0.087133542),
+                    (0.80206865, 0.34119135, 0.40310079, 0.20586264),
+                ];
+                let mut failures = Vec::new();
+                for (a, x, y, r) in cases {
+                    let (a, c, r) = (q(a), [q(x), q(y)], q(r));
+                    let ellipse = Ellipse::<R>::new((2.0 * a) as R, (2.0 * a) as R).unwrap();
+                    let circle = Circle::<R>::at(v(c), r as R).unwrap();
+                    let exact = pair(
+                        &ExactShape::from(&Shape::Circle { center: [0.0, 0.0], radius: a }),
+                        &ExactShape::from(&Shape::Circle { center: c, radius: r }),
+                    );
+                    let l = a.max(r + norm(c));
+                    let truth = Truth { signed: exact.signed_distance, bound: curved * l + 8.0 * EPS * l };
+                    if let Err(e) = check_pair(&format!("ellipse {a} around circle {c:?} r {r}"), &ellipse, &circle, &truth) {
+                        failures.push(e);
+                    }
+                }
+                assert!(failures.is_empty(), "{}", failures.join("\n"));
+            }
+
             proptest! {
                 #![proptest_config(ProptestConfig { cases: cases(600), failure_persistence: None, ..ProptestConfig::default() })]
 
