@@ -290,6 +290,15 @@ where
     if distance > radius && certain {
         return None;
     }
+    // Stopped short with no plane separating the cores: they may overlap,
+    // by at most the sum of their bounding radii less the centers' distance.
+    // The depth then lies that much above the one reported.
+    let error_bound = if !certain && core.lower_bound <= R::ZERO {
+        let scale = pair.scale();
+        error_bound + (scale + scale - pair.centers.length()).max(R::ZERO)
+    } else {
+        error_bound
+    };
     Some(Penetration {
         normal: pair.to_world_vector(normal),
         depth: (radius - distance).max(R::ZERO),

@@ -149,6 +149,14 @@ where
         // directions, and near a vertex the direction can have turned a lot.
         // A tie is not a stall: the next support then repeats a vertex.
         let stalled = vv > previous;
+        // No progress, and no support plane so far has separated the origin
+        // (in exact arithmetic every support then shrinks |v|): the simplex
+        // is within rounding of the origin, whose side of it the solve can
+        // no longer tell (a segment through the origin, a curved third point
+        // beyond it). Touching to rounding; going on would repeat the solve.
+        if vv >= previous && lower_bound <= R::ZERO {
+            return CoreProximity::Overlapping { simplex, iterations };
+        }
         previous = vv;
         if !stalled && iterations >= max_iterations {
             break (v, Status::IterationLimit);

@@ -347,29 +347,53 @@ fn walk_from<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>, start: u32) 
     polytope_support::<R, N>(vertices, d)
 }
 
-/// Walk to the neighbour with the larger dot product until neither is
-/// larger (on a convex polygon, the top), at most `max_steps` steps: returns
-/// the vertex and whether it is the top. Strictly increasing values cannot
-/// cycle, and `max_steps = n` always reaches the top.
+/// Walk from `start` towards the top along `d`, at most `max_steps` steps:
+/// returns the vertex and whether it is the top. Each step is decided by the
+/// sign of an edge's rise `(v[k+1] - v[k]) . d`, not by comparing two rounded
+/// vertex dot products: the rise rounds with the edge's length, not with the
+/// vertices' distance from the origin, so a long run of vertices whose dot
+/// products tie to rounding is climbed to its true top. The walk keeps one
+/// way and stops where the next edge does not rise: on a convex polygon,
+/// the top (the first end of an edge perpendicular to `d`, as the scan picks
+/// the first of tied vertices). `max_steps = n` always gets there; a wrong
+/// sign can only come from an edge perpendicular to `d` within rounding,
+/// which moves the dot product by as little.
 fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: usize) -> (usize, bool) {
     let n = vertices.len();
     if n == 0 {
         return (0, true);
     }
+    let next = |k: usize| if k + 1 >= n { 0 } else { k + 1 };
+    let prev = |k: usize| if k == 0 { n - 1 } else { k - 1 };
+    // The rise of the edge from vertex `k` to the next.
+    let rise = |k: usize| (at(vertices, next(k)) - at(vertices, k)).dot(d);
     let mut k = start.min(n - 1);
-    let mut best = at(vertices, k).dot(d);
+    let (ahead, behind) = (rise(k), rise(prev(k)));
+    // Forward up a rising edge (the steeper way at a bottom), back where the
+    // edge behind falls.
+    let forward = ahead > R::ZERO && ahead >= -behind;
+    let backward = behind < R::ZERO;
+    if !forward && !backward {
+        return (k, true);
+    }
+    // The rise of the edge to be walked next, along the way taken.
+    let mut edge = if forward { ahead } else { behind };
     for _ in 0..max_steps {
-        let next = if k + 1 >= n { 0 } else { k + 1 };
-        let prev = if k == 0 { n - 1 } else { k - 1 };
-        let (dn, dp) = (at(vertices, next).dot(d), at(vertices, prev).dot(d));
-        if dn > best && dn >= dp {
-            k = next;
-            best = dn;
-        } else if dp > best {
-            k = prev;
-            best = dp;
+        if forward {
+            // Not rising (NaN too): the top.
+            let on = edge > R::ZERO;
+            if !on {
+                return (k, true);
+            }
+            k = next(k);
+            edge = rise(k);
         } else {
-            return (k, true);
+            let on = edge < R::ZERO;
+            if !on {
+                return (k, true);
+            }
+            k = prev(k);
+            edge = rise(prev(k));
         }
     }
     (k, false)
