@@ -241,22 +241,29 @@ impl<R: Real> Clip<R> {
 /// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
 pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let m = o - center;
-    let mm = m.length();
-    if mm <= r {
+    // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
+    // too), without a square root.
+    let c = m.length_squared() - r * r;
+    if c <= R::ZERO {
         return RayCast::closed_form(RayOutcome::Inside);
     }
     let b = m.dot(d);
-    let p = d.cross(m).abs();
-    if b >= R::ZERO || p > r {
+    // The offset's component across the ray: m = b d + across d⊥.
+    let across = d.cross(m);
+    let p = across.abs();
+    // One branch, not two: which test a miss fails is not predictable.
+    if (b >= R::ZERO) | (p > r) {
         return RayCast::closed_form(RayOutcome::Miss);
     }
-    let disc = (r - p) * (r + p);
-    let c = (mm - r) * (mm + r);
-    let t = c / (-b + disc.sqrt());
+    let half_chord = ((r - p) * (r + p)).sqrt();
+    let t = c / (-b + half_chord);
     if t > max {
         return RayCast::closed_form(RayOutcome::Miss);
     }
-    let normal = (m + d * t).try_normalize().unwrap_or(-d);
+    // The hit point from the center is m + t d = -half_chord d + across d⊥
+    // (b + t = -half_chord): of length r to rounding, with no cancellation
+    // however far the origin, and no second square root on the way.
+    let normal = (d * -half_chord + d.perp() * across) * (R::ONE / r);
     RayCast::closed_form(hit(o, d, t, normal))
 }
 
