@@ -111,8 +111,10 @@ fn rays(seed: u64, count: usize, mk: &Maker) -> Vec<RayCase> {
 
 // --- gjk2d -----------------------------------------------------------------------
 
+/// The polygon boxed, as parry's shapes are (`Box<dyn Shape>`): a scene's
+/// enum of shapes then costs a circle its own size, not a polygon's.
 enum G<R: Real, const N: usize> {
-    P(Polygon<R, N>),
+    P(Box<Polygon<R, N>>),
     C(Circle<R>),
     K(Capsule<R>),
 }
@@ -120,7 +122,7 @@ enum G<R: Real, const N: usize> {
 fn g<R: Real, const N: usize>(s: &Sh) -> G<R, N> {
     let v = |p: &[f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
     match s {
-        Sh::Poly(p) => G::P(Polygon::new(&p.iter().map(v).collect::<Vec<_>>()).unwrap()),
+        Sh::Poly(p) => G::P(Box::new(Polygon::new(&p.iter().map(v).collect::<Vec<_>>()).unwrap())),
         Sh::Circle(c, r) => G::C(Circle::at(v(c), R::from_f64(*r)).unwrap()),
         Sh::Capsule(a, b, r) => G::K(Capsule::new(v(a), v(b), R::from_f64(*r)).unwrap()),
     }
@@ -129,7 +131,10 @@ fn g<R: Real, const N: usize>(s: &Sh) -> G<R, N> {
 macro_rules! with_g {
     ($s:expr, |$x:ident| $body:expr) => {
         match $s {
-            G::P($x) => $body,
+            G::P(p) => {
+                let $x = &**p;
+                $body
+            }
             G::C($x) => $body,
             G::K($x) => $body,
         }

@@ -921,8 +921,10 @@ struct Meas {
 // ---------------------------------------------------------------------------------
 // gjk2d side.
 
+/// The polygon boxed, as parry's shapes are (`Box<dyn Shape>`): a scene's
+/// enum of shapes then costs a circle its own size, not a polygon's.
 enum G<R: Real, const N: usize> {
-    P(Polygon<R, N>),
+    P(Box<Polygon<R, N>>),
     C(Circle<R>),
     K(Capsule<R>),
     E(Ellipse<R>),
@@ -937,7 +939,7 @@ fn build_g<R: Real, const N: usize>(sh: &Sh) -> Option<GS<R, N>> {
     let v = |p: &[f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
     let id = Transform::IDENTITY;
     Some(match sh {
-        Sh::Poly(p) => GS { s: G::P(Polygon::new(&p.iter().map(v).collect::<Vec<_>>()).ok()?), t: id },
+        Sh::Poly(p) => GS { s: G::P(Box::new(Polygon::new(&p.iter().map(v).collect::<Vec<_>>()).ok()?)), t: id },
         Sh::Circle(c, r) => GS { s: G::C(Circle::at(v(c), R::from_f64(*r)).ok()?), t: id },
         Sh::Capsule(a, b, r) => GS { s: G::K(Capsule::new(v(a), v(b), R::from_f64(*r)).ok()?), t: id },
         Sh::Ellipse(c, a, b) => GS {
@@ -952,9 +954,18 @@ fn build_g<R: Real, const N: usize>(sh: &Sh) -> Option<GS<R, N>> {
 macro_rules! with_pair {
     ($a:expr, $b:expr, |$x:ident, $y:ident| $body:expr) => {
         match (&$a.s, &$b.s) {
-            (G::P($x), G::P($y)) => $body,
-            (G::C($x), G::P($y)) => $body,
-            (G::K($x), G::P($y)) => $body,
+            (G::P(p), G::P(q)) => {
+                let ($x, $y) = (&**p, &**q);
+                $body
+            }
+            (G::C($x), G::P(q)) => {
+                let $y = &**q;
+                $body
+            }
+            (G::K($x), G::P(q)) => {
+                let $y = &**q;
+                $body
+            }
             (G::C($x), G::C($y)) => $body,
             (G::E($x), G::C($y)) => $body,
             _ => unreachable!("pair kind not used by the report"),
@@ -965,7 +976,10 @@ macro_rules! with_pair {
 macro_rules! with_shape {
     ($a:expr, |$x:ident| $body:expr) => {
         match &$a.s {
-            G::P($x) => $body,
+            G::P(p) => {
+                let $x = &**p;
+                $body
+            }
             G::C($x) => $body,
             G::K($x) => $body,
             G::E($x) => $body,

@@ -41,6 +41,7 @@ impl<R: Real, P> Gjk<R, P> {
     }
 
     /// Whether A and B overlap (touching counts), without computing how much.
+    #[cfg_attr(not(target_os = "none"), inline)]
     pub fn intersects<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Detection
     where
         A: SupportMap<R> + ?Sized,
@@ -308,6 +309,7 @@ where
     })
 }
 
+#[cfg_attr(not(target_os = "none"), inline(always))]
 fn separation<R, A, B>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<'_, R, Witness<R>>) -> Option<Separation<R>>
 where
     R: Real,

@@ -78,6 +78,7 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
 }
 
 impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s, R, A, B> {
+    #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn new(a: &'s A, ta: &'s Transform<R>, b: &'s B, tb: &Transform<R>) -> Self {
         let reference_a = V2::from_glam(a.reference_point());
         let reference_b = V2::from_glam(b.reference_point());

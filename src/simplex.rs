@@ -246,6 +246,7 @@ impl<R: Real, P> Simplex<R, P> {
     /// normal towards it, in the most precise form for the face it lies on.
     /// `toward` (B's center minus A's) orients the normal when the distance
     /// rounds to exactly zero and the edge alone cannot tell its side.
+    #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn distance_and_normal(&self, v: V2<R>, toward: V2<R>) -> Option<(R, V2<R>)> {
         if self.len == 2 {
             let [p, q, _] = &self.verts;
