@@ -143,29 +143,12 @@ mod sse2 {
         unsafe { running_max_f64(v, d) }
     }
 
-    /// Of lanes (value, index), the largest value at the smallest index; then
-    /// the vertices past the last whole chunk, from `tail_start` on, which
-    /// replace it only when strictly larger: the first maximum overall.
-    #[inline(always)]
-    fn finish<R: crate::Real>(lanes: &[(R, usize)], tail: &[V2<R>], tail_start: usize, d: V2<R>) -> usize {
-        let (mut top, mut top_i) = (-R::INFINITY, 0usize);
-        for &(value, index) in lanes {
-            let better = value > top || (value == top && index < top_i);
-            top = core::hint::select_unpredictable(better, value, top);
-            top_i = core::hint::select_unpredictable(better, index, top_i);
-        }
-        for (j, p) in tail.iter().enumerate() {
-            let dot = p.dot(d);
-            let better = dot > top;
-            top = core::hint::select_unpredictable(better, dot, top);
-            top_i = core::hint::select_unpredictable(better, tail_start + j, top_i);
-        }
-        top_i
-    }
-
-    /// Two sets of four lanes (vertices 8k to 8k+3 and 8k+4 to 8k+7: two
-    /// chains of maxima, half as long), each lane the first maximum of its
-    /// own vertices (strictly larger replaces), with its index.
+    /// The first vertex of largest dot product, in two passes: the maximum
+    /// (two chains of four lanes), then the first vertex whose dot equals
+    /// it. Carrying an index in every lane cost as much again as the dots;
+    /// the second pass compares the dots the first kept (of up to 64
+    /// vertices; beyond, it computes them again) and stops at the vertex. The dots round as the scalar ones (`x dx +
+    /// y dy`), so equality finds the very vertex, ties the first of them.
     #[target_feature(enable = "sse2")]
     #[inline]
     fn running_max_f32(v: &[V2<f32>], d: V2<f32>) -> usize {
@@ -177,60 +160,90 @@ mod sse2 {
             _mm_add_ps(_mm_shuffle_ps::<0b10_00_10_00>(low, high), _mm_shuffle_ps::<0b11_01_11_01>(low, high))
         };
         let mut best = [_mm_set1_ps(f32::NEG_INFINITY); 2];
-        let mut best_i = [_mm_setzero_si128(); 2];
-        let mut index = [_mm_setr_epi32(0, 1, 2, 3), _mm_setr_epi32(4, 5, 6, 7)];
+        // The dots of the first 64 vertices, kept for the second pass.
+        let mut kept = [_mm_setzero_ps(); 16];
         let mut chunks = v.chunks_exact(8);
-        for c in &mut chunks {
-            for k in 0..2 {
-                let dots = dots(&c[4 * k..4 * k + 4]);
-                let greater = _mm_castps_si128(_mm_cmpgt_ps(dots, best[k]));
-                best[k] = _mm_max_ps(dots, best[k]);
-                best_i[k] = _mm_or_si128(_mm_and_si128(greater, index[k]), _mm_andnot_si128(greater, best_i[k]));
-                index[k] = _mm_add_epi32(index[k], _mm_set1_epi32(8));
+        for (k, c) in (&mut chunks).enumerate() {
+            let (low, high) = (dots(&c[..4]), dots(&c[4..]));
+            if let Some(slots) = kept.get_mut(2 * k..2 * k + 2) {
+                slots.copy_from_slice(&[low, high]);
+            }
+            // A NaN dot leaves the maximum as it was (the second operand).
+            best[0] = _mm_max_ps(low, best[0]);
+            best[1] = _mm_max_ps(high, best[1]);
+        }
+        let m = _mm_max_ps(best[0], best[1]);
+        let m = _mm_max_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
+        let m = _mm_max_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m));
+        let top = chunks.remainder().iter().fold(_mm_cvtss_f32(m), |top, p| {
+            let dot = p.dot(d);
+            core::hint::select_unpredictable(dot > top, dot, top)
+        });
+        let wanted = _mm_set1_ps(top);
+        let mut quads = v.chunks_exact(4);
+        let whole = 2 * (v.len() / 8);
+        for (k, c) in (&mut quads).enumerate() {
+            let quad = match kept.get(k) {
+                Some(&quad) if k < whole => quad,
+                _ => dots(c),
+            };
+            let mask = _mm_movemask_ps(_mm_cmpeq_ps(quad, wanted));
+            if mask != 0 {
+                return 4 * k + mask.trailing_zeros() as usize;
             }
         }
-        let value = |x: __m128, k: usize| match k {
-            0 => _mm_cvtss_f32(x),
-            1 => _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(x, x)),
-            2 => _mm_cvtss_f32(_mm_shuffle_ps::<0b10_10_10_10>(x, x)),
-            _ => _mm_cvtss_f32(_mm_shuffle_ps::<0b11_11_11_11>(x, x)),
-        };
-        let index_of = |x: __m128i, k: usize| match k {
-            0 => _mm_cvtsi128_si32(x),
-            1 => _mm_cvtsi128_si32(_mm_shuffle_epi32::<0b01_01_01_01>(x)),
-            2 => _mm_cvtsi128_si32(_mm_shuffle_epi32::<0b10_10_10_10>(x)),
-            _ => _mm_cvtsi128_si32(_mm_shuffle_epi32::<0b11_11_11_11>(x)),
-        } as u32 as usize;
-        let lanes: [(f32, usize); 8] =
-            core::array::from_fn(|k| (value(best[k / 4], k % 4), index_of(best_i[k / 4], k % 4)));
-        let tail = chunks.remainder();
-        finish(&lanes, tail, v.len() - tail.len(), d)
+        first_equal(quads.remainder(), v.len() - quads.remainder().len(), d, top)
     }
 
-    /// Two lanes, as each set of [`running_max_f32`].
+    /// Two lanes, as [`running_max_f32`].
     #[target_feature(enable = "sse2")]
     #[inline]
     fn running_max_f64(v: &[V2<f64>], d: V2<f64>) -> usize {
-        let (dx, dy) = (_mm_set1_pd(d.x), _mm_set1_pd(d.y));
-        let mut best = _mm_set1_pd(f64::NEG_INFINITY);
-        let mut best_i = _mm_setzero_si128();
-        let mut index = _mm_set_epi64x(1, 0);
-        let mut chunks = v.chunks_exact(2);
-        for c in &mut chunks {
-            let xs = _mm_setr_pd(c[0].x, c[1].x);
-            let ys = _mm_setr_pd(c[0].y, c[1].y);
-            let dots = _mm_add_pd(_mm_mul_pd(xs, dx), _mm_mul_pd(ys, dy));
-            let greater = _mm_castpd_si128(_mm_cmpgt_pd(dots, best));
-            best = _mm_max_pd(dots, best);
-            best_i = _mm_or_si128(_mm_and_si128(greater, index), _mm_andnot_si128(greater, best_i));
-            index = _mm_add_epi64(index, _mm_set1_epi64x(2));
+        let dd = _mm_setr_pd(d.x, d.y);
+        // The products (x dx, y dy) of two vertices, summed across: their dots.
+        let dots = |c: &[V2<f64>]| {
+            let p = _mm_mul_pd(_mm_setr_pd(c[0].x, c[0].y), dd);
+            let q = _mm_mul_pd(_mm_setr_pd(c[1].x, c[1].y), dd);
+            _mm_add_pd(_mm_unpacklo_pd(p, q), _mm_unpackhi_pd(p, q))
+        };
+        let mut best = [_mm_set1_pd(f64::NEG_INFINITY); 2];
+        let mut kept = [_mm_setzero_pd(); 32];
+        let mut chunks = v.chunks_exact(4);
+        for (k, c) in (&mut chunks).enumerate() {
+            let (low, high) = (dots(&c[..2]), dots(&c[2..]));
+            if let Some(slots) = kept.get_mut(2 * k..2 * k + 2) {
+                slots.copy_from_slice(&[low, high]);
+            }
+            best[0] = _mm_max_pd(low, best[0]);
+            best[1] = _mm_max_pd(high, best[1]);
         }
-        let high = |x: __m128d| _mm_cvtsd_f64(_mm_unpackhi_pd(x, x));
-        let index_of = |x: __m128i| _mm_cvtsi128_si64(x) as u64 as usize;
-        let lanes =
-            [(_mm_cvtsd_f64(best), index_of(best_i)), (high(best), index_of(_mm_unpackhi_epi64(best_i, best_i)))];
-        let tail = chunks.remainder();
-        finish(&lanes, tail, v.len() - tail.len(), d)
+        let m = _mm_max_pd(best[0], best[1]);
+        let m = _mm_max_pd(m, _mm_shuffle_pd::<0b01>(m, m));
+        let top = chunks.remainder().iter().fold(_mm_cvtsd_f64(m), |top, p| {
+            let dot = p.dot(d);
+            core::hint::select_unpredictable(dot > top, dot, top)
+        });
+        let wanted = _mm_set1_pd(top);
+        let mut pairs = v.chunks_exact(2);
+        let whole = 2 * (v.len() / 4);
+        for (k, c) in (&mut pairs).enumerate() {
+            let pair = match kept.get(k) {
+                Some(&pair) if k < whole => pair,
+                _ => dots(c),
+            };
+            let mask = _mm_movemask_pd(_mm_cmpeq_pd(pair, wanted));
+            if mask != 0 {
+                return 2 * k + mask.trailing_zeros() as usize;
+            }
+        }
+        first_equal(pairs.remainder(), v.len() - pairs.remainder().len(), d, top)
+    }
+
+    /// The first of `tail` (vertices from `start` on) whose dot is `top`;
+    /// 0 when none is (every dot NaN).
+    #[inline(always)]
+    fn first_equal<R: crate::Real>(tail: &[V2<R>], start: usize, d: V2<R>, top: R) -> usize {
+        tail.iter().position(|p| p.dot(d) == top).map_or(0, |j| start + j)
     }
 
     #[inline(always)]
