@@ -239,6 +239,9 @@ where
     let (mut v, mut vv) = (V2::zero(), R::ZERO);
     let mut before = [NO_ID; 3];
     let mut previous = R::INFINITY;
+    // Whether any support plane has had the origin behind it, as `apart`
+    // needs when the loop stops making progress.
+    let mut separated = false;
     let mut iterations = 0;
     loop {
         let w = if Pair::<R, A, B>::shapes_known() { pair.support(direction) } else { pair.support_shared(direction) };
@@ -247,13 +250,19 @@ where
             // w . v / |v| is a lower bound: beyond `reach`, certainly apart.
             // Compared squared so polygons (reach 0) need no square root.
             let vw = v.dot(w.w);
+            separated |= vw > R::ZERO;
             if vw > R::ZERO && vw * vw > reach2 * vv {
                 return (false, iterations, Status::Converged);
             }
             // A vertex of the simplex before its reduction (which only drops
             // vertices, so this covers the reduced simplex too): no progress.
+            // In exact arithmetic the repeated support then has `v . w >=
+            // |v|^2 > 0`, a plane that separates. Without any so far, `v` is
+            // rounding off an edge through the origin (a slice's apex inside a
+            // rectangle gave two opposite supports, then a triangle the solve
+            // called the origin outside of): the cores touch to rounding.
             if repeats(&before, w.id) {
-                return (false, iterations, Status::Converged);
+                return (!separated, iterations, Status::Converged);
             }
             if w.id == NO_ID && vw > R::ZERO {
                 let tolerance = *tolerance.get_or_insert_with(|| epsilon * pair.scale());
@@ -273,8 +282,14 @@ where
         if vv <= reach2 {
             return (true, iterations, Status::Converged);
         }
+        // |v| grew: only rounding does that. Apart if a support plane has
+        // separated the origin; with none, the simplex is as close to the
+        // origin as the solve can tell, and the cores touch to rounding (as
+        // in the distance loop). A half ellipse and a slice overlapping by
+        // 7e-6 L in f32 stalled at |v| = 1e-5 L with every plane behind the
+        // origin, and were called apart.
         if vv > previous {
-            return (false, iterations, Status::Converged);
+            return (!separated, iterations, Status::Converged);
         }
         previous = vv;
         if iterations >= max_iterations {

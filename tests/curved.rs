@@ -606,3 +606,63 @@ fn oracle_against_point_distances() {
     }
     println!("curved oracle against point distances: worst error {worst:e} of the size");
 }
+
+// ---------------------------------------------------------------------------------
+// Regressions: failures the families found, with their exact inputs.
+
+fn regression(
+    check: fn(&Spec, &Spec, &mut Tally) -> Result<(), String>,
+    a: Kind,
+    ta: (f64, Pt),
+    b: Kind,
+    tb: (f64, Pt),
+) {
+    let (a, b) = (Spec { kind: a, angle: ta.0, t: ta.1 }, Spec { kind: b, angle: tb.0, t: tb.1 });
+    let mut tally = Tally::default();
+    if let Err(e) = check(&a, &b, &mut tally) {
+        panic!("{e}");
+    }
+    assert_eq!(tally.pairs, 1, "the shapes build");
+}
+
+/// The intersection test called a slice apart from a rectangle around its
+/// apex: GJK's second support was opposite the first, the triangle solve
+/// put the origin a rounding error outside, the third support repeated, and
+/// a repeat counted as apart with no support plane separating the origin.
+#[test]
+fn slice_apex_inside_rectangle_f32() {
+    regression(
+        single::check,
+        Kind::Slice(13.971187591552734, 3.141592502593994),
+        (0.0, [13.270705223083496, -35.01667022705078]),
+        Kind::Rectangle(20.618791580200195, 10.309395790100098),
+        (-0.18388767540454865, [13.270705223083496, -35.01667022705078]),
+    );
+}
+
+/// The same in f64, a slice of nearly pi around a segment through its apex.
+#[test]
+fn slice_apex_on_segment_f64() {
+    regression(
+        double::check,
+        Kind::Slice(11.361697315109708, 3.141492653589793),
+        (0.0, [32.34353226437585, -5.970963310645936]),
+        Kind::Segment([-3.550413848428247, -9.185248562056], [3.550413848428247, 9.185248562056]),
+        (0.05246353622303346, [32.34353226437585, -5.970963310645936]),
+    );
+}
+
+/// The intersection test's other exit without progress: |v| grew (rounding
+/// in the triangle solve, |v| about 1e-5 L) with every support plane behind
+/// the origin, and a half ellipse overlapping a slice by 7e-6 L was called
+/// apart.
+#[test]
+fn half_ellipse_slice_stall_f32() {
+    regression(
+        single::check,
+        Kind::HalfEllipse(0.8895944356918335, 44.47972106933594),
+        (2.2773196697235107, [-55.643157958984375, 49.96820068359375]),
+        Kind::Slice(45.94130325317383, 1.5707963705062866),
+        (-1.2187237739562988, [-131.1692657470703, 40.38206481933594]),
+    );
+}
