@@ -12,20 +12,20 @@
 //!
 //! # The bound
 //!
-//! Every shape is a core swept by a disk of the largest radius its curvature
-//! allows (`r_A`: a circle's or capsule's radius, `b^2 / a` for an ellipse of
-//! semi-axes `a >= b`, zero for shapes with corners; in the plane a convex set
-//! is such a sum exactly when its radius of curvature is at least `r`
-//! everywhere). Then `h_K = h_K' + r_A + r_B` with `K'` the difference of the
-//! cores, and on an arc of directions between `n0` and `n1` (less than a half
-//! turn) `h_K'(n) >= max(p0 . n, p1 . n)` for the support points `p0`, `p1` of
-//! `K'` at the ends: the support function of the chord, minimised over the arc
-//! in closed form (at the ends, where the chord's two sides cross, or opposite
-//! one end). The bound is exact when both ends have the same support point or
-//! adjacent polygon vertices, and off by the chord's sagitta `rho w^2 / 8`
-//! (`rho` the radius of curvature of `K'`, `w` the arc) on curves; sweeping the
-//! disks out first makes a disk's core a point, so concentric round shapes,
-//! whose `h_K` is flat, are bounded exactly instead of never.
+//! On an arc of directions between `n0` and `n1` (less than a half turn),
+//! each shape contributes a lower bound of its support function: on a smooth
+//! run of directions (all of them for a circle, capsule or ellipse; a half
+//! ellipse's dome; a slice's arc) the disk inside it that touches it at both
+//! ends' support points (a circle's or capsule's radius, `b^2 / a` for an
+//! ellipse of semi-axes `a >= b`, the slice's own circle about its apex),
+//! `h(n) >= max(c0 . n, c1 . n) + r`; elsewhere the support points alone
+//! (`r = 0`). The sum for `K` is the radii plus the largest of four linear
+//! parts, minimised over the arc in closed form (at an end, where two parts
+//! cross, or opposite one). The bound is exact on disks, on flat runs and
+//! where both ends share a vertex, and off by a chord's sagitta `rho w^2 / 8`
+//! (`rho` the excess radius of curvature, `w` the arc) elsewhere, so
+//! concentric round shapes, whose `h_K` is flat, are bounded exactly instead
+//! of never.
 //!
 //! Branch and bound splits the arc of least lower bound until the best value
 //! seen (an upper bound: it is `h_K` at a direction) is within `tol` of it:
