@@ -225,6 +225,7 @@ impl<R: Real> PointCores<R> {
         CoreSeparation {
             simplex: &self.simplex,
             v: self.v,
+            normal_v: self.v,
             lower_bound: self.lower_bound,
             iterations: 2,
             status: Status::Converged,
@@ -283,8 +284,7 @@ where
     let radius = pair.radius();
     // A closest point too small to give a direction is touching.
     let (distance, normal) = core
-        .simplex
-        .distance_and_normal(core.v, pair.centers)
+        .distance_and_normal(pair.centers)
         .unwrap_or_else(|| (R::ZERO, pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))));
     let error_bound = (distance - core.lower_bound).max(R::ZERO);
     let certain = core.status.is_converged() || core.lower_bound > radius;
@@ -316,7 +316,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let (core_distance, normal) = core.simplex.distance_and_normal(core.v, pair.centers)?;
+    let (core_distance, normal) = core.distance_and_normal(pair.centers)?;
     // Each radius asked once: through `dyn SupportMap` each ask is a call.
     let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
     let radius = radius_a + radius_b;

@@ -58,8 +58,27 @@ pub(crate) struct CoreSeparation<'s, R: Real, P> {
     pub v: V2<R>,
     /// The largest certified lower bound of the core distance seen.
     pub lower_bound: R,
+    /// The direction to report as the normal: `v`, or on curved cores, where
+    /// the loop can stop on a bound measured along an earlier direction that
+    /// `v`'s own support plane falls short of, that direction (whose plane
+    /// certifies `lower_bound`, so it separates the cores by the distance
+    /// within the gap; `v`'s fell short by up to 24 times the tolerance).
+    pub normal_v: V2<R>,
     pub iterations: u32,
     pub status: Status,
+}
+
+impl<R: Real, P> CoreSeparation<'_, R, P> {
+    /// The distance and unit normal of the simplex's face
+    /// ([`Simplex::distance_and_normal`]), the normal replaced by
+    /// [`normal_v`](Self::normal_v)'s direction where that differs from `v`.
+    pub fn distance_and_normal(&self, toward: V2<R>) -> Option<(R, V2<R>)> {
+        let (distance, normal) = self.simplex.distance_and_normal(self.v, toward)?;
+        if self.normal_v == self.v {
+            return Some((distance, normal));
+        }
+        Some((distance, self.normal_v.try_normalize().unwrap_or(normal)))
+    }
 }
 
 /// Whether `id` is a vertex (not a curve point) among `ids`.
@@ -127,10 +146,12 @@ where
     // end the loop (see below): rounding, or the tolerance if larger.
     let repeat_gap = (R::from_u32(16) * R::EPSILON * scale).max(tolerance);
     let mut lower_bound = R::ZERO;
+    // The direction whose support plane gave `lower_bound`.
+    let mut bound_v = V2::zero();
     let mut previous = R::INFINITY;
     let mut iterations = 1;
     // One exit for both ways of ending apart (one copy of the result).
-    let (v, status) = loop {
+    let (v, normal_v, status) = loop {
         // Ids before the reduction: a vertex dropped now and found again next
         // is a repeat too (Box2D compares with the saved vertices likewise).
         let before = simplex.ids();
@@ -159,12 +180,19 @@ where
         }
         previous = vv;
         if !stalled && iterations >= max_iterations {
-            break (v, Status::IterationLimit);
+            // `v`'s own plane is unmeasured: the certified one, if any.
+            let normal_v = if lower_bound > R::ZERO { bound_v } else { v };
+            break (v, normal_v, Status::IterationLimit);
         }
         let w = pair.support_shared(-v);
         iterations += 1;
         let length = vv.sqrt();
-        lower_bound = lower_bound.max(v.dot(w.w) / length);
+        // Not `max`, to keep its direction (a NaN bound is skipped, as there).
+        let bound = v.dot(w.w) / length;
+        if bound > lower_bound {
+            lower_bound = bound;
+            bound_v = v;
+        }
         // The gap test needs a positive lower bound: with none, the support
         // plane does not separate the origin, which may well be inside.
         let gap_closed = lower_bound > R::ZERO && length - lower_bound <= tolerance;
@@ -177,11 +205,18 @@ where
         // simplex is a repeat of one before it too.)
         let repeat = repeats(&before, w.id) && (length - lower_bound <= repeat_gap || simplex.ids().contains(&w.id));
         if stalled || repeat || gap_closed {
-            break (v, Status::Converged);
+            // `v` unless its own plane falls short of the best by more than
+            // rounding (never on polytopes, whose last plane is the best).
+            // Within the tolerance, so the normal is off by at most twice
+            // it; not `repeat_gap`, which in f32 is 16 eps (1.9e-6 of the
+            // size, and normals fell 1.1 times the guarantee short). Four eps
+            // changed the golden batch's normals, all within rounding.
+            let normal_v = if bound >= lower_bound - tolerance { v } else { bound_v };
+            break (v, normal_v, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));
     };
-    separated(simplex, v, lower_bound, iterations, status)
+    separated(simplex, v, normal_v, lower_bound, iterations, status)
 }
 
 /// The simplex of the first support point, for [`distance_loop`]. Inlined,
@@ -201,11 +236,12 @@ where
 fn separated<R: Real, P>(
     simplex: &Simplex<R, P>,
     v: V2<R>,
+    normal_v: V2<R>,
     lower_bound: R,
     iterations: u32,
     status: Status,
 ) -> CoreProximity<'_, R, P> {
-    CoreProximity::Separated(CoreSeparation { simplex, v, lower_bound, iterations, status })
+    CoreProximity::Separated(CoreSeparation { simplex, v, normal_v, lower_bound, iterations, status })
 }
 
 /// The intersection test: GJK that stops as soon as either verdict is
@@ -239,6 +275,9 @@ where
     let (mut v, mut vv) = (V2::zero(), R::ZERO);
     let mut before = [NO_ID; 3];
     let mut previous = R::INFINITY;
+    // Whether any support plane has had the origin behind it, as `apart`
+    // needs when the loop stops making progress.
+    let mut separated = false;
     let mut iterations = 0;
     loop {
         let w = if Pair::<R, A, B>::shapes_known() { pair.support(direction) } else { pair.support_shared(direction) };
@@ -247,13 +286,19 @@ where
             // w . v / |v| is a lower bound: beyond `reach`, certainly apart.
             // Compared squared so polygons (reach 0) need no square root.
             let vw = v.dot(w.w);
+            separated |= vw > R::ZERO;
             if vw > R::ZERO && vw * vw > reach2 * vv {
                 return (false, iterations, Status::Converged);
             }
             // A vertex of the simplex before its reduction (which only drops
             // vertices, so this covers the reduced simplex too): no progress.
+            // In exact arithmetic the repeated support then has `v . w >=
+            // |v|^2 > 0`, a plane that separates. Without any so far, `v` is
+            // rounding off an edge through the origin (a slice's apex inside a
+            // rectangle gave two opposite supports, then a triangle the solve
+            // called the origin outside of): the cores touch to rounding.
             if repeats(&before, w.id) {
-                return (false, iterations, Status::Converged);
+                return (!separated, iterations, Status::Converged);
             }
             if w.id == NO_ID && vw > R::ZERO {
                 let tolerance = *tolerance.get_or_insert_with(|| epsilon * pair.scale());
@@ -273,8 +318,14 @@ where
         if vv <= reach2 {
             return (true, iterations, Status::Converged);
         }
+        // |v| grew: only rounding does that. Apart if a support plane has
+        // separated the origin; with none, the simplex is as close to the
+        // origin as the solve can tell, and the cores touch to rounding (as
+        // in the distance loop). A half ellipse and a slice overlapping by
+        // 7e-6 L in f32 stalled at |v| = 1e-5 L with every plane behind the
+        // origin, and were called apart.
         if vv > previous {
-            return (false, iterations, Status::Converged);
+            return (!separated, iterations, Status::Converged);
         }
         previous = vv;
         if iterations >= max_iterations {

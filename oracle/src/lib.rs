@@ -10,6 +10,7 @@
 //! candidates (prefilters with a documented safety margin), never to decide an answer.
 
 mod core;
+pub mod curved;
 pub mod exact;
 mod pair;
 mod ray;
