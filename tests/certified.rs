@@ -28,7 +28,6 @@
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
-use gjk2d_oracle::exact::{q_from_f64, round_iv, sqrt_bounds, Q};
 use gjk2d_oracle::{pair, ray as oracle_ray, ExactShape, RayStatus, Shape};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
@@ -36,32 +35,9 @@ use std::f64::consts::TAU;
 #[path = "common/geo.rs"]
 mod geo;
 use geo::{integer_hull, norm, sub, Pt};
-
-/// Cases of a property, times `GJK2D_LONG` when set.
-fn cases(base: u32) -> u32 {
-    let long = std::env::var("GJK2D_LONG").ok().and_then(|s| s.parse::<u32>().ok()).unwrap_or(1);
-    base * long.max(1)
-}
-
-/// SplitMix64: the many vertices of a polygon come from a seed, not from
-/// proptest's vectors (shrinking a thousand points tells nothing a seed does
-/// not).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-}
+#[path = "common/seeded.rs"]
+mod seeded;
+use seeded::{cases, Rng};
 
 /// Aspect ratios of the dense polygons: round, nearly round (long nearly
 /// collinear runs), and flat.
@@ -192,31 +168,6 @@ fn signed_sector(r: f64, u0: Pt, u1: Pt, p: Pt) -> f64 {
     } else {
         edges.min(if within { (pr - r).abs() } else { f64::INFINITY })
     }
-}
-
-/// The exact parameter `t` of the first crossing of `o + t d` with the
-/// ellipse `x^2/a^2 + y^2/b^2 = 1` (origin outside), correctly rounded from
-/// rational arithmetic; `None` when the line misses it.
-#[allow(dead_code)]
-fn ellipse_ray(a: f64, b: f64, o: Pt, d: Pt) -> Option<f64> {
-    let q = q_from_f64;
-    let (a2, b2) = (q(a) * q(a), q(b) * q(b));
-    let (ox, oy, dx, dy) = (q(o[0]), q(o[1]), q(d[0]), q(d[1]));
-    let qa = &b2 * &dx * &dx + &a2 * &dy * &dy;
-    let qb = (&b2 * &ox * &dx + &a2 * &oy * &dy) * Q::from_integer(2.into());
-    let qc = &b2 * &ox * &ox + &a2 * &oy * &oy - &a2 * &b2;
-    let disc = &qb * &qb - &qa * &qc * Q::from_integer(4.into());
-    let zero = Q::from_integer(0.into());
-    if disc < zero || qb >= zero {
-        return None;
-    }
-    // t = 2c / (-b + sqrt(disc)): no cancellation, and monotone in sqrt.
-    let two_c = &qc * Q::from_integer(2.into());
-    let neg_b = -qb;
-    Some(round_iv(|bits| {
-        let (lo, hi) = sqrt_bounds(&disc, bits);
-        (&two_c / (&neg_b + hi), &two_c / (&neg_b + lo))
-    }))
 }
 
 macro_rules! certified_suite {
