@@ -85,10 +85,11 @@ impl<R: Real + Format> Format for RayHit<R> {
     fn format(&self, f: Formatter<'_>) {
         write!(
             f,
-            "RayHit {{ distance: {}, point: {}, normal: {} }}",
+            "RayHit {{ distance: {}, point: {}, normal: {}, error_bound: {} }}",
             self.distance,
             xy::<R>(self.point),
-            xy::<R>(self.normal)
+            xy::<R>(self.normal),
+            self.error_bound
         )
     }
 }

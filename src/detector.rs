@@ -173,10 +173,32 @@ impl<R: Real, P> Gjk<R, P> {
                 // From the world ray, not the local point: one rounding less.
                 point: (ray.origin + ray.direction * h.distance).to_glam(),
                 normal: transform.rotate(V2::from_glam(h.normal)).to_glam(),
+                error_bound: world_error_bound(h.error_bound, h.distance, origin, reference, shape.bounding_radius()),
             }),
             other => other,
         };
         RayCast { outcome, ..local }
+    }
+}
+
+/// A local hit's `error_bound` in the world. The local casts count the
+/// origin's rounding into the local frame at `1.5 eps |o|`; taking the
+/// reference point off rounds at the scale of `|o + reference|`, which adds
+/// `1.5 eps |reference|`. The bounds grow at most linearly with what moves
+/// the boundary (by `1/cos`, or less at tangency), so scaling by that ratio
+/// covers it, up to the distance plus the shape's diameter.
+fn world_error_bound<R: Real>(local: R, t: R, origin: V2<R>, reference: V2<R>, size: R) -> R {
+    if reference == V2::zero() {
+        return local;
+    }
+    let scale = origin.length() + t;
+    let factor = R::ONE + R::from_f64(1.5) * reference.length() / scale;
+    let grown = local * factor;
+    let cap = local.max(t + R::TWO * size);
+    if grown < cap {
+        grown
+    } else {
+        cap
     }
 }
 

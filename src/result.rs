@@ -93,6 +93,17 @@ pub struct RayHit<R: Real> {
     pub point: R::Vector,
     /// Unit outward normal of the surface at the hit point.
     pub normal: R::Vector,
+    /// Bound on `|distance - exact distance|` (the exact distance of the
+    /// world ray to the world shape), rounding and, for curved shapes, the
+    /// iteration's tolerance included. It grows as the ray turns towards the
+    /// surface's tangent, as the hit itself does: an error `e` in where the
+    /// boundary lies moves the hit by `e / cos` (cos = `|normal . direction|`),
+    /// and by at most `sqrt(2 r e)` on a circle of radius `r` at tangency. At
+    /// most the distance plus the shape's diameter, so never inf or NaN.
+    /// The GJK cast (curved shapes without a closed form) bounds it to first
+    /// order in its final gap, which holds unless the ray is within that gap
+    /// of the tangent.
+    pub error_bound: R,
 }
 
 /// The answer of a ray cast.

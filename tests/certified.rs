@@ -23,7 +23,6 @@
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
-use gjk2d_oracle::exact::{q_from_f64, round_iv, sqrt_bounds, Q};
 use gjk2d_oracle::{pair, ray as oracle_ray, ExactShape, RayStatus, Shape};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
@@ -61,31 +60,6 @@ fn dense_polygon(rng: &mut Rng, n: usize, aspect: f64, c: (i64, i64)) -> Vec<Pt>
         })
         .collect();
     integer_hull(pts).into_iter().map(|(x, y)| [x as f64 * STEP, y as f64 * STEP]).collect()
-}
-
-/// The exact parameter `t` of the first crossing of `o + t d` with the
-/// ellipse `x^2/a^2 + y^2/b^2 = 1` (origin outside), correctly rounded from
-/// rational arithmetic; `None` when the line misses it.
-#[allow(dead_code)]
-fn ellipse_ray(a: f64, b: f64, o: Pt, d: Pt) -> Option<f64> {
-    let q = q_from_f64;
-    let (a2, b2) = (q(a) * q(a), q(b) * q(b));
-    let (ox, oy, dx, dy) = (q(o[0]), q(o[1]), q(d[0]), q(d[1]));
-    let qa = &b2 * &dx * &dx + &a2 * &dy * &dy;
-    let qb = (&b2 * &ox * &dx + &a2 * &oy * &dy) * Q::from_integer(2.into());
-    let qc = &b2 * &ox * &ox + &a2 * &oy * &oy - &a2 * &b2;
-    let disc = &qb * &qb - &qa * &qc * Q::from_integer(4.into());
-    let zero = Q::from_integer(0.into());
-    if disc < zero || qb >= zero {
-        return None;
-    }
-    // t = 2c / (-b + sqrt(disc)): no cancellation, and monotone in sqrt.
-    let two_c = &qc * Q::from_integer(2.into());
-    let neg_b = -qb;
-    Some(round_iv(|bits| {
-        let (lo, hi) = sqrt_bounds(&disc, bits);
-        (&two_c / (&neg_b + hi), &two_c / (&neg_b + lo))
-    }))
 }
 
 macro_rules! certified_suite {
