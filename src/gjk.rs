@@ -10,7 +10,7 @@
 //! - no progress: `|v|` grew, so rounding has the last word;
 //! - the iteration limit, reported as such.
 
-use crate::minkowski::{Pair, SupportPoint, NO_ID};
+use crate::minkowski::{MinkowskiDifference, Pair, SupportPoint, NO_ID};
 use crate::real::{Real, V2};
 use crate::result::Status;
 use crate::shape::SupportMap;
@@ -58,27 +58,8 @@ pub(crate) struct CoreSeparation<'s, R: Real, P> {
     pub v: V2<R>,
     /// The largest certified lower bound of the core distance seen.
     pub lower_bound: R,
-    /// The direction to report as the normal: `v`, or on curved cores, where
-    /// the loop can stop on a bound measured along an earlier direction that
-    /// `v`'s own support plane falls short of, that direction (whose plane
-    /// certifies `lower_bound`, so it separates the cores by the distance
-    /// within the gap; `v`'s fell short by up to 24 times the tolerance).
-    pub normal_v: V2<R>,
     pub iterations: u32,
     pub status: Status,
-}
-
-impl<R: Real, P> CoreSeparation<'_, R, P> {
-    /// The distance and unit normal of the simplex's face
-    /// ([`Simplex::distance_and_normal`]), the normal replaced by
-    /// [`normal_v`](Self::normal_v)'s direction where that differs from `v`.
-    pub fn distance_and_normal(&self, toward: V2<R>) -> Option<(R, V2<R>)> {
-        let (distance, normal) = self.simplex.distance_and_normal(self.v, toward)?;
-        if self.normal_v == self.v {
-            return Some((distance, normal));
-        }
-        Some((distance, self.normal_v.try_normalize().unwrap_or(normal)))
-    }
 }
 
 /// Whether `id` is a vertex (not a curve point) among `ids`.
@@ -146,12 +127,13 @@ where
     // end the loop (see below): rounding, or the tolerance if larger.
     let repeat_gap = (R::from_u32(16) * R::EPSILON * scale).max(tolerance);
     let mut lower_bound = R::ZERO;
-    // The direction whose support plane gave `lower_bound`.
-    let mut bound_v = V2::zero();
+    // Polytopes stop on their best plane: a pair known to be one links none
+    // of the check below.
+    let curved = !(Pair::<R, A, B>::shapes_known() && MinkowskiDifference::is_polytope(pair));
     let mut previous = R::INFINITY;
     let mut iterations = 1;
     // One exit for both ways of ending apart (one copy of the result).
-    let (v, normal_v, status) = loop {
+    let (v, status) = loop {
         // Ids before the reduction: a vertex dropped now and found again next
         // is a repeat too (Box2D compares with the saved vertices likewise).
         let before = simplex.ids();
@@ -180,19 +162,20 @@ where
         }
         previous = vv;
         if !stalled && iterations >= max_iterations {
-            // `v`'s own plane is unmeasured: the certified one, if any.
-            let normal_v = if lower_bound > R::ZERO { bound_v } else { v };
-            break (v, normal_v, Status::IterationLimit);
+            // With no plane separating the origin, the cores may overlap, by
+            // at most the sum of their bounding radii: the bound then says
+            // so, and the error bounds made of it hold (a depth lies that
+            // much above the one reported).
+            if lower_bound <= R::ZERO {
+                lower_bound = -(scale + scale);
+            }
+            break (v, Status::IterationLimit);
         }
         let w = pair.support_shared(-v);
         iterations += 1;
         let length = vv.sqrt();
-        // Not `max`, to keep its direction (a NaN bound is skipped, as there).
         let bound = v.dot(w.w) / length;
-        if bound > lower_bound {
-            lower_bound = bound;
-            bound_v = v;
-        }
+        lower_bound = lower_bound.max(bound);
         // The gap test needs a positive lower bound: with none, the support
         // plane does not separate the origin, which may well be inside.
         let gap_closed = lower_bound > R::ZERO && length - lower_bound <= tolerance;
@@ -204,19 +187,18 @@ where
         // (The reduction only drops vertices: a repeat of one still in the
         // simplex is a repeat of one before it too.)
         let repeat = repeats(&before, w.id) && (length - lower_bound <= repeat_gap || simplex.ids().contains(&w.id));
-        if stalled || repeat || gap_closed {
-            // `v` unless its own plane falls short of the best by more than
-            // rounding (never on polytopes, whose last plane is the best).
-            // Within the tolerance, so the normal is off by at most twice
-            // it; not `repeat_gap`, which in f32 is 16 eps (1.9e-6 of the
-            // size, and normals fell 1.1 times the guarantee short). Four eps
-            // changed the golden batch's normals, all within rounding.
-            let normal_v = if bound >= lower_bound - tolerance { v } else { bound_v };
-            break (v, normal_v, Status::Converged);
+        // The normal is `v`'s: on curved cores the bounds can meet on a
+        // plane measured along an earlier direction while `v`'s own falls
+        // short by more than the tolerance (then its normal does not achieve
+        // the distance); the loop goes on until `v`'s plane agrees too. Never
+        // on polytopes, whose last plane is the best.
+        let short = curved && bound < lower_bound - tolerance;
+        if stalled || ((repeat || gap_closed) && !short) {
+            break (v, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));
     };
-    separated(simplex, v, normal_v, lower_bound, iterations, status)
+    separated(simplex, v, lower_bound, iterations, status)
 }
 
 /// The simplex of the first support point, for [`distance_loop`]. Inlined,
@@ -236,12 +218,11 @@ where
 fn separated<R: Real, P>(
     simplex: &Simplex<R, P>,
     v: V2<R>,
-    normal_v: V2<R>,
     lower_bound: R,
     iterations: u32,
     status: Status,
 ) -> CoreProximity<'_, R, P> {
-    CoreProximity::Separated(CoreSeparation { simplex, v, normal_v, lower_bound, iterations, status })
+    CoreProximity::Separated(CoreSeparation { simplex, v, lower_bound, iterations, status })
 }
 
 /// The intersection test: GJK that stops as soon as either verdict is

@@ -48,60 +48,26 @@ impl<R: Real> Ray<R> {
     }
 }
 
-fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>, error_bound: R) -> RayOutcome<R> {
-    RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam(), error_bound })
+/// A hit of an exact closed form: no gap across the surface
+/// ([`RayHit::error_bound`] of a local cast); rounding is added in the world.
+fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
+    gap_hit(o, d, t, normal, R::ZERO)
 }
 
-/// `bound`, at most `cap` (a NaN or infinite bound gives `cap`): the hit
-/// distance's error cannot exceed the distance plus the shape's diameter.
-#[inline(always)]
-fn capped<R: Real>(bound: R, cap: R) -> R {
-    if bound < cap {
-        bound
-    } else {
-        cap
-    }
-}
-
-/// How far the hit moves when the boundary's line moves by `across`, met at
-/// incidence `cos` (`|n . d|` of the computed unit normal `n`), at most `cap`.
-/// The computed `cos` is within `2 eps` of the exact one, so that much is
-/// taken off: a ray within rounding of the tangent gets the cap.
-#[inline(always)]
-fn incidence_bound<R: Real>(across: R, cos: R, cap: R) -> R {
-    let cos = cos - R::TWO * R::EPSILON;
-    if cos * cap > across {
-        across / cos
-    } else {
-        cap
-    }
-}
-
-/// How far rounding may have moved the local ray: its origin `o` (which
-/// came through a subtraction and a rotation, within `1.5 eps |o|`) and, at
-/// distance `t`, its direction (a rotation and a normalisation: within
-/// `eps` of its angle and `3 eps` of unit length). Across the ray, then
-/// along it.
-#[inline(always)]
-fn ray_rounding<R: Real>(o: V2<R>, t: R) -> (R, R) {
-    let eps = R::EPSILON;
-    // |x| + |y| for |o|: no square root, at most 1.42 times as large.
-    (eps * (R::from_f64(1.5) * (o.x.abs() + o.y.abs()) + t), R::from_u32(3) * eps * t)
+fn gap_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>, gap: R) -> RayOutcome<R> {
+    RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam(), error_bound: gap })
 }
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
 /// the hit is the last entry, its normal the entered face's.
-///
-/// `size` bounds the vertices' distance from their centre: it caps the hit's
-/// `error_bound`.
-pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R, size: R) -> RayCast<R> {
+pub(crate) fn cast_ray_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let mut clip = Clip::new(o, d, max);
     for (&a, &b) in vertices.iter().zip(vertices.iter().skip(1).chain(vertices.first())) {
         if clip.misses(a, b) {
             return RayCast::closed_form(RayOutcome::Miss);
         }
     }
-    clip.outcome(size)
+    clip.outcome()
 }
 
 /// The ray's line meets a convex polygon's boundary on two edges: one on
@@ -124,7 +90,6 @@ pub(crate) fn cast_ray_many_sided<R: Real, const N: usize>(
     d: V2<R>,
     max: R,
     reach: R,
-    size: R,
 ) -> Option<RayCast<R>> {
     let n = v.len();
     let left = d.perp();
@@ -157,7 +122,7 @@ pub(crate) fn cast_ray_many_sided<R: Real, const N: usize>(
             return Some(RayCast::closed_form(RayOutcome::Miss));
         }
     }
-    Some(clip.outcome(size))
+    Some(clip.outcome())
 }
 
 /// On the chain counter-clockwise from vertex `from` to vertex `to` (where
@@ -190,9 +155,8 @@ struct Clip<R: Real> {
     d: V2<R>,
     lower: R,
     upper: R,
-    /// The normal of the edge the ray last entered through, and the edge's
-    /// first vertex.
-    entered: Option<(V2<R>, V2<R>)>,
+    /// The normal of the edge the ray last entered through.
+    entered: Option<V2<R>>,
 }
 
 impl<R: Real> Clip<R> {
@@ -218,7 +182,7 @@ impl<R: Real> Clip<R> {
             // (denominator < 0 flips it): one division per update, not per edge.
             if numerator < self.lower * denominator {
                 self.lower = numerator / denominator;
-                self.entered = Some((normal, a));
+                self.entered = Some(normal);
                 // A subnormal denominator (a ray parallel to the face to
                 // rounding) sends t to infinity: no entry, a miss.
                 if self.upper < self.lower || !self.lower.is_finite() {
@@ -270,23 +234,10 @@ impl<R: Real> Clip<R> {
         false
     }
 
-    /// The hit's `error_bound`: `t = n.(a - o) / n.d` with the edge normal
-    /// `n` and vertex `a` as computed (a normal turned by rounding turns the
-    /// face about `a`, within `eps/2` of the distance to the hit) is within
-    /// `eps (2 |a - o| + 3 t)` of the face's crossing across the face, which
-    /// the incidence divides. `size` bounds the vertices' distance from
-    /// their centre.
-    fn outcome(self, size: R) -> RayCast<R> {
+    fn outcome(self) -> RayCast<R> {
         RayCast::closed_form(match self.entered {
             None => RayOutcome::Inside,
-            Some((normal, a)) => {
-                let (o, d, t) = (self.o, self.d, self.lower);
-                let normal = normal.try_normalize().unwrap_or(-d);
-                let (across, along) = ray_rounding(o, t);
-                let across = across + R::EPSILON * (R::TWO * (a - o).length() + R::from_u32(3) * t);
-                let cap = t + R::TWO * size;
-                hit(o, d, t, normal, capped(incidence_bound(across, normal.dot(d).abs(), cap) + along, cap))
-            }
+            Some(normal) => hit(self.o, self.d, self.lower, normal.try_normalize().unwrap_or(-self.d)),
         })
     }
 }
@@ -294,12 +245,6 @@ impl<R: Real> Clip<R> {
 /// Ray against a disk. The root is taken in the form without cancellation,
 /// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
 /// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
-///
-/// The hit's `error_bound` follows each rounded input of the root: the
-/// offset `p` (within `dp`) moves `sqrt(disc)` by at most
-/// `min(E / sqrt(disc), sqrt(E))`, `E = dp (2 p + dp)` (the second is the
-/// `sqrt(2 r dp)` of a tangent ray); `c` moves `t` by its error over the far
-/// root `-b + sqrt(disc)`, `b` moves it by its own.
 pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let m = o - center;
     // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
@@ -317,8 +262,7 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
         return RayCast::closed_form(RayOutcome::Miss);
     }
     let half_chord = ((r - p) * (r + p)).sqrt();
-    let far = -b + half_chord;
-    let t = c / far;
+    let t = c / (-b + half_chord);
     if t > max {
         return RayCast::closed_form(RayOutcome::Miss);
     }
@@ -326,29 +270,7 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
     // (b + t = -half_chord): of length r to rounding, with no cancellation
     // however far the origin, and no second square root on the way.
     let normal = (d * -half_chord + d.perp() * across) * (R::ONE / r);
-    RayCast::closed_form(hit(o, d, t, normal, disk_error_bound(center, r, m, p, half_chord, far, o, t)))
-}
-
-/// The error bound of [`cast_ray_disk`]'s hit at `t`, from the rounding of
-/// each input of its root. Lengths are taken as `|x| + |y|` (no square
-/// root; at most 1.42 times the length), and the tangent case's `sqrt(E)`
-/// only where it is the smaller term.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn disk_error_bound<R: Real>(center: V2<R>, r: R, m: V2<R>, p: R, half_chord: R, far: R, o: V2<R>, t: R) -> R {
-    let eps = R::EPSILON;
-    let (across_ray, along_ray) = ray_rounding(o, t);
-    let mm = m.x.abs() + m.y.abs();
-    // `m` rounds within eps/2 |m| (and `center` within eps/2 |center|); `p`
-    // and `b` within 2.5 eps |m| more, with the direction's length.
-    let dm = eps * (R::HALF * mm + center.x.abs() + center.y.abs());
-    let dp = across_ray + dm + R::from_u32(3) * eps * mm;
-    let e = dp * (R::TWO * p + dp);
-    let d_root = if half_chord * half_chord >= e { e / half_chord } else { e.sqrt() };
-    // |m|^2 - r^2 within 2 eps |m|^2 of rounding, and 2 |m| dm from m's.
-    let d_c = R::TWO * (dm * (mm + dm) + eps * mm * mm);
-    let bound = d_c / far + dp + d_root + R::from_f64(1.5) * eps * half_chord + along_ray + eps * t;
-    capped(bound, t + R::TWO * r)
+    RayCast::closed_form(hit(o, d, t, normal))
 }
 
 /// Ray against the segment `a`-`a + delta` swept by `r` (> 0, as a
@@ -385,28 +307,11 @@ pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, 
         let t = (h.abs() - r) / dn.abs();
         along = axis.dot(rel + d * t);
         if along >= R::ZERO && along <= length {
-            let outcome = if t <= max {
-                hit(o, d, t, side * toward, side_bound(rel, r, length, t, dn))
-            } else {
-                RayOutcome::Miss
-            };
+            let outcome = if t <= max { hit(o, d, t, side * toward) } else { RayOutcome::Miss };
             return RayCast::closed_form(outcome);
         }
     }
     cast_ray_disk(if along < R::ZERO { a } else { a + delta }, r, o, d, max)
-}
-
-/// The `error_bound` of a hit on a capsule's side `t = (|h| - r) / |dn|`:
-/// the side line is within `eps (|rel| + r + length / 2)` of where it is
-/// (the axis rounded in length and angle, the height `h` in its dot
-/// product), and `dn` within `2.5 eps`, which moves `t` by `2.5 eps t`
-/// across the side; the incidence `|dn|` divides both.
-fn side_bound<R: Real>(rel: V2<R>, r: R, length: R, t: R, dn: R) -> R {
-    let eps = R::EPSILON;
-    let (across, along) = ray_rounding(rel, t);
-    let across = across + eps * (R::from_u32(2) * (rel.length() + r) + length + R::from_u32(3) * t);
-    let cap = t + length + R::TWO * r;
-    capped(incidence_bound(across, dn.abs(), cap) + along + eps * t, cap)
 }
 
 /// Ray against the bare segment `a`-`a + delta`. A segment has no inside, so
@@ -423,7 +328,7 @@ pub(crate) fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<
         return RayCast::closed_form(RayOutcome::Inside);
     }
     let denominator = d.cross(delta);
-    let mut best: Option<(R, V2<R>, R)> = None;
+    let mut best: Option<(R, V2<R>)> = None;
     if denominator != R::ZERO {
         let t = rel.cross(delta) / denominator;
         let s = rel.cross(d) / denominator;
@@ -434,35 +339,25 @@ pub(crate) fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<
             // The face normal on the side the ray comes from.
             let n = delta.perp();
             let n = if n.dot(d) > R::ZERO { -n } else { n };
-            // As a polygon's face: `t = (a - o) x delta / d x delta`.
-            let across = R::EPSILON * (R::TWO * rel.length() + R::from_u32(3) * t);
-            best = Some((t, n.try_normalize().unwrap_or(-d), across));
+            best = Some((t, n.try_normalize().unwrap_or(-d)));
         }
     }
-    // The incidence, |d x delta| / |delta|, for the bound.
-    let cos = denominator.abs() / delta.length();
     for end in [rel, rel + delta] {
         let t = end.dot(d);
         let off = d.cross(end).abs();
         if t >= R::ZERO
             && t <= max
             && off <= slack * (end.length() + delta.length())
-            && best.is_none_or(|(bt, _, _)| t < bt)
+            && best.is_none_or(|(bt, _)| t < bt)
         {
             if t == R::ZERO {
                 return RayCast::closed_form(RayOutcome::Inside);
             }
-            // The ray may pass the end by the slack: across the segment's
-            // line, as far as a crossing that near would be.
-            best = Some((t, -d, off + slack * (end.length() + delta.length()) + R::EPSILON * t));
+            best = Some((t, -d));
         }
     }
     RayCast::closed_form(match best {
-        Some((t, normal, across)) => {
-            let (ray_across, along) = ray_rounding(o, t);
-            let cap = t + delta.length();
-            hit(o, d, t, normal, capped(incidence_bound(across + ray_across, cos, cap) + along, cap))
-        }
+        Some((t, normal)) => hit(o, d, t, normal),
         None => RayOutcome::Miss,
     })
 }
@@ -530,19 +425,12 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
             Closest::Point(closest) => closest,
         };
     };
+    // The ray point is outside the shape (to rounding) and within |v| of it:
+    // to first order, |v| across the surface from the hit.
     let outcome = if lambda == R::ZERO {
         RayOutcome::Inside
     } else {
-        let normal = normal.try_normalize().unwrap_or(-d);
-        // The ray point is outside the shape (to rounding) and within |v| of
-        // it: to first order, |v| across the surface from the hit. Rounding:
-        // the ray point's and the support points' (within eps of the shape's
-        // size), and the ray's own.
-        let (across, along) = ray_rounding(o, lambda);
-        let size = shape.bounding_radius();
-        let across = v.length() + across + R::EPSILON * (lambda + R::TWO * size);
-        let cap = lambda + R::TWO * size + tolerance;
-        hit(o, d, lambda, normal, capped(incidence_bound(across, normal.dot(d).abs(), cap) + along, cap))
+        gap_hit(o, d, lambda, normal.try_normalize().unwrap_or(-d), v.length())
     };
     RayCast { outcome, iterations, status }
 }

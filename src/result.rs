@@ -93,16 +93,16 @@ pub struct RayHit<R: Real> {
     pub point: R::Vector,
     /// Unit outward normal of the surface at the hit point.
     pub normal: R::Vector,
-    /// Bound on `|distance - exact distance|` (the exact distance of the
-    /// world ray to the world shape), rounding and, for curved shapes, the
-    /// iteration's tolerance included. It grows as the ray turns towards the
-    /// surface's tangent, as the hit itself does: an error `e` in where the
-    /// boundary lies moves the hit by `e / cos` (cos = `|normal . direction|`),
-    /// and by at most `sqrt(2 r e)` on a circle of radius `r` at tangency. At
-    /// most the distance plus the shape's diameter, so never inf or NaN.
-    /// The GJK cast (curved shapes without a closed form) bounds it to first
-    /// order in its final gap, which holds unless the ray is within that gap
-    /// of the tangent.
+    /// Bound on `|distance - exact distance|` (the world ray against the
+    /// world shape), rounding and the GJK cast's tolerance included. It grows
+    /// as the ray turns towards the surface's tangent, as the hit itself does:
+    /// what moves the boundary by `e` moves the hit by `e / cos` (cos =
+    /// `|normal . direction|`, at most `sqrt(2 r e)` at the tangent of a curve
+    /// of radius `r`, which the computed `cos` covers). At most the distance
+    /// plus the shape's diameter, never inf or NaN. In a local cast
+    /// ([`SupportMap::cast_local_ray`](crate::SupportMap::cast_local_ray)) it
+    /// is the cast's own gap across the surface: zero for an exact closed
+    /// form.
     pub error_bound: R,
 }
 

@@ -365,36 +365,25 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: us
     }
     let next = |k: usize| if k + 1 >= n { 0 } else { k + 1 };
     let prev = |k: usize| if k == 0 { n - 1 } else { k - 1 };
-    // The rise of the edge from vertex `k` to the next.
-    let rise = |k: usize| (at(vertices, next(k)) - at(vertices, k)).dot(d);
     let mut k = start.min(n - 1);
-    let (ahead, behind) = (rise(k), rise(prev(k)));
+    let rise = |from: usize, to: usize| (at(vertices, to) - at(vertices, from)).dot(d);
+    let (ahead, behind) = (rise(k, next(k)), rise(prev(k), k));
     // Forward up a rising edge (the steeper way at a bottom), back where the
-    // edge behind falls.
+    // edge behind falls; then on that way while the next edge rises (not
+    // rising, NaN too: the top).
     let forward = ahead > R::ZERO && ahead >= -behind;
     let backward = behind < R::ZERO;
     if !forward && !backward {
         return (k, true);
     }
-    // The rise of the edge to be walked next, along the way taken.
-    let mut edge = if forward { ahead } else { behind };
+    let step = |k: usize| if forward { next(k) } else { prev(k) };
     for _ in 0..max_steps {
-        if forward {
-            // Not rising (NaN too): the top.
-            let on = edge > R::ZERO;
-            if !on {
-                return (k, true);
-            }
-            k = next(k);
-            edge = rise(k);
-        } else {
-            let on = edge < R::ZERO;
-            if !on {
-                return (k, true);
-            }
-            k = prev(k);
-            edge = rise(prev(k));
+        let j = step(k);
+        let up = rise(k, j) > R::ZERO;
+        if !up {
+            return (k, true);
         }
+        k = j;
     }
     (k, false)
 }

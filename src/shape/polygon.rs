@@ -227,14 +227,13 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
-        let size = self.bounding_radius_squared.sqrt();
         if searched::<N>(self.len) {
             // How far the vertices are from the ray's origin, at most.
-            let reach = (self.center - o).length() + size;
-            if let Some(cast) = cast_ray_many_sided::<R, N>(self.vertices(), o, d, max, reach, size) {
+            let reach = (self.center - o).length() + self.bounding_radius_squared.sqrt();
+            if let Some(cast) = cast_ray_many_sided::<R, N>(self.vertices(), o, d, max, reach) {
                 return Some(cast);
             }
         }
-        Some(cast_ray_polygon(self.vertices(), o, d, max, size))
+        Some(cast_ray_polygon(self.vertices(), o, d, max))
     }
 }

@@ -78,6 +78,6 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
         self.half.length()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_polygon(&self.corners(), V2::from_glam(o), V2::from_glam(d), max, self.bounding_radius()))
+        Some(cast_ray_polygon(&self.corners(), V2::from_glam(o), V2::from_glam(d), max))
     }
 }
