@@ -81,6 +81,12 @@ impl<R: Real, P> Gjk<R, P> {
                 return separation(&pair, &core.separation());
             }
         }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
+            if let Some(near) = crate::point_polygon::nearest(polygon, p) {
+                return point_polygon_separation(&pair, near, point_is_a);
+            }
+        }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
         match pair.core_distance(&mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreProximity::Overlapping { .. } => None,
@@ -105,6 +111,11 @@ impl<R: Real, P> Gjk<R, P> {
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if P::SEPARATING_AXES {
+            if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
+                if let Some(near) = crate::point_polygon::nearest(polygon, p) {
+                    return point_polygon_penetration(&pair, near, point_is_a);
+                }
+            }
             if let Some((pa, pb)) = pair.small_polygons() {
                 let axes = crate::sat::Axes::new(&pair, pa, pb);
                 if axes.separated() {
@@ -211,6 +222,79 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
     } else {
         cap
     }
+}
+
+/// The separation of a point core and a small polygon from the polygon's
+/// nearest feature: what GJK's loop ends with, in closed form.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+fn point_polygon_separation<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    near: crate::point_polygon::Nearest<R>,
+    point_is_a: bool,
+) -> Option<Separation<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let crate::point_polygon::Nearest::Outside { distance, normal, point } = near else {
+        return None;
+    };
+    let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
+    if distance <= radius_a + radius_b {
+        return None;
+    }
+    // `normal` points from the polygon towards the point; the circle's
+    // closest point lies that far back from its centre.
+    let (normal, point_a, point_b) = if point_is_a {
+        let (normal, point) = (pair.b_vector_to_pair(normal), pair.b_to_pair(point));
+        let centre = V2::from_glam(pair.a_center());
+        (-normal, centre - normal * radius_a, point)
+    } else {
+        let centre = pair.b_to_pair(V2::from_glam(pair.b_center()));
+        (normal, point, centre - normal * radius_b)
+    };
+    Some(Separation {
+        distance: distance - (radius_a + radius_b),
+        normal: pair.to_world_vector(normal),
+        point_a: pair.to_world_point(point_a),
+        point_b: pair.to_world_point(point_b),
+        error_bound: R::ZERO,
+        iterations: 1,
+        status: Status::Converged,
+    })
+}
+
+/// The penetration of a point core and a small polygon: the circle's radius
+/// less the centre's distance outside, or plus its depth inside, along the
+/// nearest feature's normal.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+fn point_polygon_penetration<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    near: crate::point_polygon::Nearest<R>,
+    point_is_a: bool,
+) -> Option<Penetration<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    use crate::point_polygon::Nearest;
+    let radius = pair.radius();
+    let (depth, normal) = match near {
+        Nearest::Outside { distance, .. } if distance > radius => return None,
+        Nearest::Outside { distance, normal, .. } => (radius - distance, normal),
+        Nearest::Inside { depth, normal } => (radius + depth, normal),
+    };
+    // From A towards B: the polygon's outward normal when it is A.
+    let normal = if point_is_a { -pair.b_vector_to_pair(normal) } else { normal };
+    Some(Penetration {
+        normal: pair.to_world_vector(normal),
+        depth,
+        error_bound: R::ZERO,
+        iterations: 1,
+        status: Status::Converged,
+    })
 }
 
 /// The intersection test of two point cores: GJK's verdict, iteration count

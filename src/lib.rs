@@ -47,6 +47,8 @@ mod error;
 mod gjk;
 mod hw_sqrt;
 mod minkowski;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod point_polygon;
 mod ray;
 mod real;
 mod result;

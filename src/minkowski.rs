@@ -130,6 +130,17 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn radius_b(&self) -> R {
         self.b.radius()
     }
+    /// Each shape's center, in its own frame.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn a_center(&self) -> R::Vector {
+        self.a.center()
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn b_center(&self) -> R::Vector {
+        self.b.center()
+    }
 
     /// The pair's size: the larger bounding radius. Asked for where it is
     /// needed, not up front: the polygon overlap test never needs it, and then
@@ -228,6 +239,36 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         }
         let (a, b): (&'s A, &'s B) = (self.a, self.b);
         Some((a.small_polygon()?.vertices, b.small_polygon()?.vertices))
+    }
+
+    /// A point core (a circle's centre) and a small polygon, where both
+    /// shapes' types are known when the program is compiled: the point in
+    /// the polygon's frame, the polygon's vertices, and whether the point is
+    /// A's (then the polygon is B, and its answers go back through
+    /// [`b_to_pair`](Self::b_to_pair) and [`b_vector_to_pair`](Self::b_vector_to_pair)).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn point_and_small_polygon(&self) -> Option<(V2<R>, Vertices<'s, R>, bool)> {
+        if !Self::shapes_known() {
+            return None;
+        }
+        let point_core = |radius: R, bounding: R| radius > R::ZERO && bounding <= radius;
+        let (a, b): (&'s A, &'s B) = (self.a, self.b);
+        if point_core(a.radius(), a.bounding_radius()) {
+            let polygon = b.small_polygon()?.vertices;
+            return Some((self.inverse_rotate(V2::from_glam(a.center()) - self.offset), polygon, true));
+        }
+        if point_core(b.radius(), b.bounding_radius()) {
+            return Some((self.b_to_pair(V2::from_glam(b.center())), a.small_polygon()?.vertices, false));
+        }
+        None
+    }
+
+    /// A direction of B's frame in the pair frame.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn b_vector_to_pair(&self, v: V2<R>) -> V2<R> {
+        self.rotate(v)
     }
 
     /// A point of B's frame (relative to its reference point) in the pair

@@ -367,6 +367,8 @@ pub trait Real:
     /// Machine epsilon (the gap between 1 and the next representable value).
     const EPSILON: Self;
     const INFINITY: Self;
+    /// The least positive normal number.
+    const MIN_POSITIVE: Self;
     /// Largest coordinate magnitude a shape may have. Squares of differences of
     /// such coordinates, summed, stay finite, so no query can overflow to inf/NaN.
     const MAX_COORDINATE: Self;
@@ -420,6 +422,7 @@ macro_rules! impl_real {
             const HALF: Self = 0.5;
             const EPSILON: Self = <$t>::EPSILON;
             const INFINITY: Self = <$t>::INFINITY;
+            const MIN_POSITIVE: Self = <$t>::MIN_POSITIVE;
             const MAX_COORDINATE: Self = $max_coord;
             const SPLITTER: Self = $splitter;
 

@@ -1,0 +1,146 @@
+//! A circle against a polygon of at most eight vertices, types known when the
+//! program is compiled, is answered in closed form on hosts (distance, and
+//! penetration with EPA as the solver): the polygon's nearest edge or vertex
+//! to the circle's centre. Checked here against the exact oracle, as the GJK
+//! and EPA path is in tests/properties.rs: random convex polygons of 3 to 8
+//! vertices and circles at scales from 1e-13 to 1e4, near the origin and far
+//! from it, placed with and without rotation, the circle as A and as B,
+//! apart, touching, overlapping and with its centre deep inside. Every
+//! verdict beyond 8 eps L must be right, every distance and depth within
+//! 8 eps L (plus the placement's rounding) of the exact one, the normal must
+//! give the depth, and the closest points must lie on their shapes. The same
+//! pairs through `dyn SupportMap` (GJK and EPA) must agree within those
+//! bounds.
+
+#[path = "common/geo.rs"]
+mod geo;
+
+use gjk2d::glam::{DVec2, Vec2};
+use gjk2d::{Circle, Gjk, Polygon, SupportMap, Transform};
+use gjk2d_oracle::{pair, transform_shape, Shape};
+use proptest::prelude::*;
+
+type Pt = [f64; 2];
+
+/// A polygon: integer hull points times a power-of-two scale.
+#[derive(Clone, Debug)]
+struct Spec {
+    hull: Vec<(i64, i64)>,
+    scale_exp: i32,
+}
+
+fn polygon() -> impl Strategy<Value = Spec> {
+    (prop::collection::vec((-20i64..=20, -20i64..=20), 3..14), -40i32..=13)
+        .prop_map(|(points, scale_exp)| Spec { hull: geo::integer_hull(points), scale_exp })
+        .prop_filter("3 to 8 vertices", |s| (3..=8).contains(&s.hull.len()))
+}
+
+/// The circle: its centre (in units of the polygon's scale: from deep inside
+/// to well outside), its radius (units of the scale), an angle for the
+/// polygon's placement (or none), an origin far away or not, which is A.
+fn circle_and_placement() -> impl Strategy<Value = ((i64, i64), u32, Option<f64>, bool, bool)> {
+    ((-30i64..=30, -30i64..=30), 1u32..=24, prop::option::of(0.0f64..6.3), prop::bool::ANY, prop::bool::ANY)
+}
+
+macro_rules! point_polygon_suite {
+    ($name:ident, $r:ty, $vec:ident) => {
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(3000))]
+            #[test]
+            fn $name(poly in polygon(), ((cx, cy), radius, angle, far, circle_first) in circle_and_placement()) {
+                type R = $r;
+                let eps = R::EPSILON as f64;
+                let scale = (2.0f64).powi(poly.scale_exp - 3);
+                let origin: Pt = if far { [(1 << 16) as f64 * scale, -((1 << 15) as f64) * scale] } else { [0.0, 0.0] };
+                let pts: Vec<Pt> = poly.hull.iter().map(|&(x, y)| [x as f64 * scale, y as f64 * scale]).collect();
+                let v = |p: Pt| $vec::new(p[0] as R, p[1] as R);
+                let polygon = Polygon::<R, 8>::new(&pts.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
+                let r = radius as f64 * scale * 0.5;
+                let centre = [cx as f64 * scale * 0.5, cy as f64 * scale * 0.5];
+                let circle = Circle::<R>::at(v(centre), r as R).unwrap();
+                let tp = match angle {
+                    Some(t) => Transform::<R>::new(v(origin), t as R).unwrap(),
+                    None => Transform::<R>::from_translation(v(origin)).unwrap(),
+                };
+                let tc = Transform::<R>::from_translation(v(origin)).unwrap();
+                let exact = |s: Shape, t: &Transform<R>| {
+                    let tr = t.translation();
+                    transform_shape(&s, t.cos() as f64, t.sin() as f64, tr.x as f64, tr.y as f64)
+                };
+                let ep = exact(Shape::Polygon(pts.clone()), &tp);
+                let ec = exact(Shape::Circle { center: centre, radius: r }, &tc);
+                let truth = if circle_first { pair(&ec, &ep) } else { pair(&ep, &ec) };
+                // World vertices and centre, in f64 (the rotation's rounding is in the bound).
+                let (c, s) = (tp.cos() as f64, tp.sin() as f64);
+                let world: Vec<Pt> = pts.iter().map(|p| [c * p[0] - s * p[1] + origin[0] as R as f64, s * p[0] + c * p[1] + origin[1] as R as f64]).collect();
+                let wc = [centre[0] + origin[0] as R as f64, centre[1] + origin[1] as R as f64];
+                let extent = world.iter().map(|p| (p[0] - world[0][0]).hypot(p[1] - world[0][1])).fold(0.0, f64::max);
+                let l = extent.max(r).max((wc[0] - world[0][0]).hypot(wc[1] - world[0][1]));
+                let placement = if angle.is_some() { 4.0 * eps * (l + extent) } else { 0.0 };
+                let bound = 8.0 * eps * l + placement + 4.0 * f64::EPSILON * (l + origin[0].abs() + origin[1].abs());
+                // Points come back in world coordinates, rounded there.
+                let point_bound = 2.0 * bound + 4.0 * eps * (origin[0].abs() + origin[1].abs());
+
+                // The polygon's reach along n and the circle's, for "the normal gives the depth".
+                let reach_polygon = |n: Pt| world.iter().map(|q| q[0] * n[0] + q[1] * n[1]).fold(f64::MIN, f64::max);
+                let reach_circle = |n: Pt| wc[0] * n[0] + wc[1] * n[1] + r;
+                let gjk = Gjk::<R>::new();
+                let (dp, dc): (&dyn SupportMap<R>, &dyn SupportMap<R>) = (&polygon, &circle);
+                let (fast_d, slow_d, fast_p, slow_p) = if circle_first {
+                    (gjk.distance(&circle, &tc, &polygon, &tp), gjk.distance(dc, &tc, dp, &tp),
+                     gjk.penetration(&circle, &tc, &polygon, &tp), gjk.penetration(dc, &tc, dp, &tp))
+                } else {
+                    (gjk.distance(&polygon, &tp, &circle, &tc), gjk.distance(dp, &tp, dc, &tc),
+                     gjk.penetration(&polygon, &tp, &circle, &tc), gjk.penetration(dp, &tp, dc, &tc))
+                };
+                for (sep, path) in [(fast_d, "closed form"), (slow_d, "gjk")] {
+                    match sep {
+                        None => prop_assert!(truth.signed_distance <= bound, "{path}: no distance, exact {}", truth.signed_distance),
+                        Some(d) => {
+                            prop_assert!(truth.signed_distance >= -bound, "{path}: distance, exact depth {}", truth.depth);
+                            let dist = d.distance as f64;
+                            prop_assert!((dist - truth.distance).abs() <= bound, "{path}: distance {dist}, exact {}, bound {bound}", truth.distance);
+                            prop_assert!(d.status.is_converged());
+                            // The closest points lie on their shapes, `distance` apart along the normal.
+                            let n = [d.normal.x as f64, d.normal.y as f64];
+                            let (pa, pb) = ([d.point_a.x as f64, d.point_a.y as f64], [d.point_b.x as f64, d.point_b.y as f64]);
+                            let gap = (pb[0] - pa[0]) * n[0] + (pb[1] - pa[1]) * n[1];
+                            prop_assert!((gap - dist).abs() <= point_bound, "{path}: points {gap} apart along the normal, distance {dist}");
+                            let (on_circle, on_polygon) = if circle_first { (pa, pb) } else { (pb, pa) };
+                            let off = ((on_circle[0] - wc[0]).hypot(on_circle[1] - wc[1]) - r).abs();
+                            prop_assert!(off <= point_bound, "{path}: circle point {off} off the circle");
+                            let m = if circle_first { [-n[0], -n[1]] } else { n };
+                            let support = reach_polygon(m) - (on_polygon[0] * m[0] + on_polygon[1] * m[1]);
+                            prop_assert!(support.abs() <= point_bound, "{path}: polygon point {support} below its support plane");
+                        }
+                    }
+                }
+                for (pen, path) in [(fast_p, "closed form"), (slow_p, "epa")] {
+                    match pen {
+                        None => prop_assert!(truth.signed_distance >= -bound, "{path}: no penetration, exact depth {}", truth.depth),
+                        Some(p) => {
+                            prop_assert!(truth.signed_distance <= bound, "{path}: penetration, exact distance {}", truth.signed_distance);
+                            let depth = p.depth as f64;
+                            prop_assert!((depth - truth.depth).abs() <= bound, "{path}: depth {depth}, exact {}, bound {bound}", truth.depth);
+                            // A's reach along the normal minus B's: what moving B by the depth undoes.
+                            let n = [p.normal.x as f64, p.normal.y as f64];
+                            let minus = [-n[0], -n[1]];
+                            let along = if circle_first { reach_circle(n) + reach_polygon(minus) } else { reach_polygon(n) + reach_circle(minus) };
+                            prop_assert!((along - depth).abs() <= 2.0 * bound, "{path}: overlap {along} along the normal, depth {depth}");
+                            prop_assert!(p.status.is_converged());
+                        }
+                    }
+                }
+                if let (Some(f), Some(s)) = (fast_d, slow_d) {
+                    prop_assert!((f.distance as f64 - s.distance as f64).abs() <= 2.0 * bound);
+                }
+                if let (Some(f), Some(s)) = (fast_p, slow_p) {
+                    prop_assert!((f.depth as f64 - s.depth as f64).abs() <= 2.0 * bound);
+                }
+            }
+        }
+    };
+}
+
+point_polygon_suite!(point_polygon_matches_the_oracle_f32, f32, Vec2);
+point_polygon_suite!(point_polygon_matches_the_oracle_f64, f64, DVec2);
