@@ -12,6 +12,9 @@
 
 #[path = "common/geo.rs"]
 mod geo;
+#[path = "common/small_polygon.rs"]
+mod small_polygon;
+use small_polygon::{polygon, Spec};
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::{Gjk, Polygon, SupportMap, Transform};
@@ -19,19 +22,6 @@ use gjk2d_oracle::{pair, transform_shape, Shape};
 use proptest::prelude::*;
 
 type Pt = [f64; 2];
-
-/// A polygon: integer hull points times a power-of-two scale plus an offset.
-#[derive(Clone, Debug)]
-struct Spec {
-    hull: Vec<(i64, i64)>,
-    scale_exp: i32,
-}
-
-fn polygon() -> impl Strategy<Value = Spec> {
-    (prop::collection::vec((-20i64..=20, -20i64..=20), 3..14), -40i32..=13)
-        .prop_map(|(points, scale_exp)| Spec { hull: geo::integer_hull(points), scale_exp })
-        .prop_filter("3 to 8 vertices", |s| (3..=8).contains(&s.hull.len()))
-}
 
 /// Placement of B: a shift (in units of A's size), an angle (or none), an
 /// origin far away or not.
