@@ -163,8 +163,7 @@ impl<R: Real, P> Gjk<R, P> {
         // difference first, so a ray near a far-away shape keeps its precision.
         let origin = transform.inverse_rotate(ray.origin - transform.translation) - reference;
         let direction = transform.inverse_rotate(ray.direction);
-        let local =
-            if self.closed_form_rays { shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max) } else { None };
+        let local = if self.closed_form_rays { cast_local_ray(shape, origin, direction, max) } else { None };
         let local = local.unwrap_or_else(|| {
             cast_ray_gjk(
                 shape,
@@ -197,6 +196,26 @@ impl<R: Real, P> Gjk<R, P> {
         };
         RayCast { outcome, ..local }
     }
+}
+
+/// The shape's closed-form ray cast, in its local frame. A small polygon of
+/// a type known when the program is compiled is clipped by every edge at
+/// once on hosts (never through `dyn SupportMap`, so every target shares
+/// the golden batch's path).
+#[inline(always)]
+fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
+    shape: &S,
+    origin: V2<R>,
+    direction: V2<R>,
+    max: R,
+) -> Option<RayCast<R>> {
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    if Pair::<R, S, S>::shapes_known() {
+        if let Some(polygon) = shape.small_polygon() {
+            return Some(crate::ray::cast_ray_small_polygon(polygon.vertices, origin, direction, max));
+        }
+    }
+    shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
 }
 
 /// A hit distance's error bound: what may have moved the boundary across

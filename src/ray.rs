@@ -5,6 +5,8 @@
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
 use crate::result::{RayCast, RayHit, RayOutcome, Status};
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::shape::SMALL_POLYGON_MAX;
 use crate::shape::{at, first_reached, polytope_support, SupportMap};
 use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
@@ -56,6 +58,57 @@ fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
 
 fn gap_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>, gap: R) -> RayOutcome<R> {
     RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam(), error_bound: gap })
+}
+
+/// [`cast_ray_polygon`] for a polygon of at most [`SMALL_POLYGON_MAX`]
+/// vertices, every edge clipped at once: the same per-edge numerators,
+/// denominators and quotients, then the latest entry and the earliest exit
+/// taken by selects over the lanes. On hosts, where the clip's branches (is
+/// this edge entered, left, the new latest?) change from ray to ray and a
+/// predictor misses them.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) fn cast_ray_small_polygon<R: Real>(vertices: &[V2<R>], o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    const M: usize = SMALL_POLYGON_MAX;
+    let n = vertices.len().min(M);
+    let first = vertices.first().copied().unwrap_or_default();
+    // Unused slots copy the first vertex: their edges are empty, with a zero
+    // normal, and clip nothing.
+    let v: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).copied().unwrap_or(first));
+    let next: [V2<R>; M] = core::array::from_fn(|i| if i + 1 < n { v[(i + 1) % M] } else { first });
+    let mut lower = [-R::INFINITY; M];
+    let mut upper = [max; M];
+    let (mut entered, mut parallel_outside) = (false, false);
+    for i in 0..M {
+        let normal = (next[i] - v[i]).perp_cw();
+        // Positive when the origin is on the inner side of this edge.
+        let numerator = normal.dot(v[i] - o);
+        let denominator = normal.dot(d);
+        let t = numerator / denominator;
+        // Entered beyond the origin (t > 0), or left before `max`.
+        let entering = (denominator < R::ZERO) & (numerator < R::ZERO);
+        let leaving = denominator > R::ZERO;
+        entered |= entering;
+        lower[i] = core::hint::select_unpredictable(entering, t, -R::INFINITY);
+        upper[i] = core::hint::select_unpredictable(leaving, t, max);
+        parallel_outside |= (denominator == R::ZERO) & (numerator < R::ZERO);
+    }
+    let mut entry = 0;
+    let mut exit = upper[0];
+    for i in 1..M {
+        entry = core::hint::select_unpredictable(lower[i] > lower[entry], i, entry);
+        exit = exit.min(upper[i]);
+    }
+    let t = if entered { lower[entry] } else { R::ZERO };
+    // A subnormal denominator (a ray parallel to a face to rounding) sends t
+    // to infinity: no entry, a miss.
+    if parallel_outside | (exit < t) | !t.is_finite() {
+        return RayCast::closed_form(RayOutcome::Miss);
+    }
+    if !entered {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let normal = (next[entry] - v[entry]).perp_cw();
+    RayCast::closed_form(hit(o, d, t, normal.try_normalize().unwrap_or(-d)))
 }
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):

@@ -40,9 +40,7 @@ macro_rules! point_polygon_suite {
             fn $name(poly in polygon(), ((cx, cy), radius, angle, far, circle_first) in circle_and_placement()) {
                 type R = $r;
                 let eps = R::EPSILON as f64;
-                let scale = (2.0f64).powi(poly.scale_exp - 3);
-                let origin: Pt = if far { [(1 << 16) as f64 * scale, -((1 << 15) as f64) * scale] } else { [0.0, 0.0] };
-                let pts: Vec<Pt> = poly.hull.iter().map(|&(x, y)| [x as f64 * scale, y as f64 * scale]).collect();
+                let (scale, origin, pts) = (poly.scale(), poly.origin(far), poly.points());
                 let v = |p: Pt| $vec::new(p[0] as R, p[1] as R);
                 let polygon = Polygon::<R, 8>::new(&pts.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
                 let r = radius as f64 * scale * 0.5;
