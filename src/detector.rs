@@ -153,6 +153,7 @@ impl<R: Real, P> Gjk<R, P> {
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
     /// up to `max_length` (zero, negative or infinite: unbounded).
+    #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn raycast<S>(&self, ray: &Ray<R>, max_length: R, shape: &S, transform: &Transform<R>) -> RayCast<R>
     where
         S: SupportMap<R> + ?Sized,

@@ -298,6 +298,7 @@ impl<R: Real> Clip<R> {
 /// Ray against a disk. The root is taken in the form without cancellation,
 /// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
 /// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
+#[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let m = o - center;
     // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
@@ -310,13 +311,19 @@ pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, ma
     // The offset's component across the ray: m = b d + across d⊥.
     let across = d.cross(m);
     let p = across.abs();
-    // One branch, not two: which test a miss fails is not predictable.
-    if (b >= R::ZERO) | (p > r) {
+    // On hosts one branch for every way to miss, not two: which test a miss
+    // fails is not predictable (past the radius the chord is then taken as
+    // zero, a value never used). Bare metal, with no predictor to miss,
+    // leaves as soon as it knows.
+    let outside = (b >= R::ZERO) | (p > r);
+    if cfg!(target_os = "none") && outside {
         return RayCast::closed_form(RayOutcome::Miss);
     }
-    let half_chord = ((r - p) * (r + p)).sqrt();
+    let chord_squared = (r - p) * (r + p);
+    let chord_squared = if cfg!(target_os = "none") { chord_squared } else { chord_squared.max(R::ZERO) };
+    let half_chord = chord_squared.sqrt();
     let t = c / (-b + half_chord);
-    if t > max {
+    if outside | (t > max) {
         return RayCast::closed_form(RayOutcome::Miss);
     }
     // The hit point from the center is m + t d = -half_chord d + across d⊥
