@@ -1,6 +1,6 @@
 use super::polygon_frame::Frame;
 use super::{polytope_support, polytope_support_near, searched, SupportMap};
-use crate::ray::{cast_ray_many_sided, cast_ray_polygon, LocalRayCast};
+use crate::ray::{cast_ray_many_sided, cast_ray_polygon, FaceRounding, LocalRayCast};
 use crate::real::{Real, V2};
 use crate::Error;
 use glam::{DVec2, Vec2};
@@ -227,13 +227,15 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
+        let size = self.bounding_radius_squared.sqrt();
+        let rounding = FaceRounding::new(o, self.reference, size);
         if searched::<N>(self.len) {
             // How far the vertices are from the ray's origin, at most.
-            let reach = (self.center - o).length() + self.bounding_radius_squared.sqrt();
-            if let Some(cast) = cast_ray_many_sided::<R, N>(self.vertices(), o, d, max, reach) {
+            let reach = (self.center - o).length() + size;
+            if let Some(cast) = cast_ray_many_sided::<R, N>(self.vertices(), o, d, max, reach, rounding) {
                 return Some(cast);
             }
         }
-        Some(cast_ray_polygon(self.vertices(), o, d, max))
+        Some(cast_ray_polygon(self.vertices(), o, d, max, rounding))
     }
 }

@@ -1,5 +1,5 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_polygon, LocalRayCast};
+use crate::ray::{cast_ray_polygon, FaceRounding, LocalRayCast};
 use crate::real::{Real, V2};
 use crate::transform::check_length;
 use crate::Error;
@@ -78,6 +78,10 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
         self.half.length()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        Some(cast_ray_polygon(&self.corners(), V2::from_glam(o), V2::from_glam(d), max))
+        let o = V2::from_glam(o);
+        // |half|_1: at least the bounding radius, with no square root.
+        let size = self.half.x + self.half.y;
+        let rounding = FaceRounding::new(o, V2::zero(), size);
+        Some(cast_ray_polygon(&self.corners(), o, V2::from_glam(d), max, rounding))
     }
 }
