@@ -7,7 +7,6 @@ use crate::Error;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Slice<R: Real> {
     radius: R,
-    cos_half: R,
     /// The arc's end points, counter-clockwise one first.
     ends: [V2<R>; 2],
     centroid: V2<R>,
@@ -37,8 +36,13 @@ impl<R: Real> SupportMap<R> for Slice<R> {
     #[cfg_attr(not(target_os = "none"), inline)]
     fn support_feature(&self, direction: R::Vector, _near: u32) -> (R::Vector, u32) {
         let d = V2::from_glam(direction);
-        if let Some(u) = d.try_normalize() {
-            if u.x >= self.cos_half {
+        // Within the arc's angular range, between the ends (a slice is at
+        // most a half disk): told by the ends' sines against the direction's
+        // slope, which keep their digits near the axis. Not by cosines: f32
+        // cannot resolve them near 1, and a needle (1e-3 rad) would take
+        // directions 1e-4 rad past its ends for the arc, points outside it.
+        if self.ends[0].y * d.x >= self.ends[0].x * d.y.abs() {
+            if let Some(u) = d.try_normalize() {
                 return ((u * self.radius).to_glam(), super::NO_FEATURE);
             }
         }
@@ -102,7 +106,6 @@ macro_rules! const_constructors {
                 let cx = 2.0 * radius * sinc / 3.0;
                 Ok(Self {
                     radius,
-                    cos_half: c,
                     ends: [V2 { x: radius * c, y: radius * s }, V2 { x: radius * c, y: -radius * s }],
                     centroid: V2 { x: cx, y: 0.0 },
                 })
