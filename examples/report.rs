@@ -1,10 +1,10 @@
 //! gjk2d's error against its run time, side by side with parry2d.
 //!
 //! ```text
-//! cargo run --release --example report              # a few minutes on 2 cores
-//! cargo run --release --example report -- --quick   # CI smoke run, about a minute
+//! cargo run --release --example report              # the default run
+//! cargo run --release --example report -- --quick   # CI's smoke run: fewer cases and repeats
 //! cargo run --release --example report -- --long    # 4x the cases, more repeats
-//! cargo run --release --example report -- --cases ../shared/workloads/poly8.txt --out report
+//! cargo run --release --example report -- --cases my-cases.txt --out report
 //! ```
 //!
 //! Every scene family is generated from a fixed seed. All inputs are f32 values, so the
@@ -638,7 +638,7 @@ fn generate(scale: f64) -> Vec<Family> {
 }
 
 // ---------------------------------------------------------------------------------
-// Case files (../shared/workloads/FORMAT.md): shapes parsed, answers recomputed by the
+// Case files (the format is in docs/speed.md): shapes parsed, answers recomputed by the
 // oracle (which also gives margins and normals) and checked against the file's.
 
 fn parse_shape(t: &[&str], i: &mut usize) -> Result<Sh, String> {
@@ -1840,7 +1840,7 @@ fn machine() -> String {
 // ---------------------------------------------------------------------------------
 
 /// Writes every generated family (ellipses excepted: the format has none) as a case
-/// file in the FORMAT.md format, for tests and for reproducing a row of the table.
+/// file (docs/speed.md has the format), for tests and for reproducing a row of the table.
 fn save_cases(dir: &std::path::Path, families: &[Family]) -> std::io::Result<()> {
     std::fs::create_dir_all(dir)?;
     for f in families.iter().filter(|f| !f.name.starts_with("file:")) {
@@ -1993,6 +1993,6 @@ parry has no ellipse. mean iters: GJK (+EPA) or ray-cast iterations reported by 
             eprintln!("[report] saving cases to {save}: {e}");
             std::process::exit(1);
         }
-        eprintln!("[report] saved the generated cases to {save}/ (FORMAT.md)");
+        eprintln!("[report] saved the generated cases to {save}/ (format: docs/speed.md)");
     }
 }
