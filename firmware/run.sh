@@ -365,12 +365,9 @@ done
 # there as measured, or the page states figures nobody measured. README.md's
 # status table quotes the .text of the budgeted firmwares on the M4F and the
 # range of its stacks per precision, checked the same way.
-stale=0
-lacks() { stale=$((stale + 1)); echo "$1 lacks $2"; }
+source "$ROOT/.ci/quoted.sh"
 for f in $FIGURES; do
-  while IFS= read -r line; do
-    grep -Fxq -- "$line" "$FW/README.md" || lacks firmware/README.md "this row of $f.md: $line"
-  done < <(grep '^|' "$FW/$f.md")
+  quotes_rows "$FW/README.md" "$(grep '^|' "$FW/$f.md")"
 done
 summary=()
 for bin in size_1_intersect_const size_2_distance_const size_3_penetration_const size_5_all_f32_const; do
@@ -381,18 +378,8 @@ for precision in f32 f64; do
     $2 == p { s = $6 + 0; if (n++ == 0 || s < lo) lo = s; if (s > hi) hi = s }
     END { printf "%s: %d to %d B", p, lo, hi }')")
 done
-for figure in "${summary[@]}"; do
-  grep -Fq -- "$figure" "$ROOT/README.md" || lacks README.md "this measured figure: $figure"
-done
-if [ "$stale" -gt 0 ]; then
-  if [ "$figures_fail" = 1 ]; then
-    fail "firmware/README.md or README.md quote other figures than the measured ones in $stale place(s)"
-  else
-    echo "firmware/README.md or README.md quote other figures than these measurements in $stale place(s) (reported, not failed)"
-  fi
-else
-  echo "firmware/README.md quotes the measured tables, README.md the measured budget figures"
-fi
+quotes "$ROOT/README.md" "${summary[@]}"
+quoted_verdict "$figures_fail" || fail "firmware/README.md or README.md quote other figures than the measured ones in $stale place(s)"
 if [ ${#grown[@]} -gt 0 ]; then
   if [ "$figures_fail" = 1 ]; then
     fail "${#grown[@]} figure(s) grew over the committed ones (commit the new firmware/*.md if intended; ACCEPT_GROWTH=1 reports only)"
