@@ -5,7 +5,10 @@
 # every one), instructions and stack per query, flash budgets and the
 # no-panic link check. Writes size-table.md, icount.md and
 # stack.md beside this script and compares them with the committed ones:
-# a figure that grew fails the run. Exits non-zero on any failure.
+# a figure that grew fails the run. Checks that README.md beside this script
+# (the firmware page) quotes those tables and shows the example it builds, and
+# that the repository's README.md quotes the budget figures it measured.
+# Exits non-zero on any failure.
 #
 #   bash firmware/run.sh
 #
@@ -15,8 +18,8 @@
 # but rustup components and targets.
 #
 # ALLOW_PANIC_PATHS=1 reports surviving panic paths without failing.
-# ACCEPT_GROWTH=1 reports figures that grew over the committed ones, and a
-# README.md that quotes other figures, without failing.
+# ACCEPT_GROWTH=1 reports figures that grew over the committed ones, and
+# pages that quote other figures, without failing.
 # ENFORCE_BUDGETS=1 fails on the known budget misses too; =0 only reports.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -30,7 +33,7 @@ failures=()
 misses=()
 fail() { failures+=("$*"); echo "FAILED: $*"; }
 # Flash and stack budgets. A budget met is enforced: a change that breaks
-# it fails the run. The known misses (README.md says why) are reported and
+# it fails the run. The known misses (firmware/README.md says why) are reported and
 # fail only with ENFORCE_BUDGETS=1. Sizes depend on the compiler, so budgets
 # are enforced with the rustc they were measured with (BUDGET_RUSTC) and only
 # reported under another (ENFORCE_BUDGETS=0 reports everything).
@@ -119,8 +122,14 @@ for target in "$M4" "$M0" "$M33" "$RV" "$RVF"; do
   [ "$hash" = "$expected_hash" ] || fail "golden hash on $target is ${hash:-missing}, tests/golden_hash.txt has $expected_hash"
 done
 
-step "the README's firmware example builds"
-cargo build --release --bin readme_example --target "$M4" -q || fail "README firmware example does not build"
+step "firmware/README.md's example builds and is the page's main.rs"
+cargo build --release --bin readme_example --target "$M4" -q || fail "firmware/README.md's example (src/bin/readme_example.rs) does not build"
+# The page's one rust,ignore block is the bin's source, each without its first
+# line (which says where the code is shown or comes from).
+if ! diff <(sed -n '/^```rust,ignore$/,/^```$/p' "$FW/README.md" | sed '1,2d;$d') <(sed 1d "$FW/src/bin/readme_example.rs") >"$out/readme-example.diff"; then
+  cat "$out/readme-example.diff"
+  fail "firmware/README.md's main.rs differs from src/bin/readme_example.rs"
+fi
 
 step "defmt: every result type formatted on the M4F (frames over semihosting)"
 # Frames are binary; decoding needs defmt-print (cargo install, kept out of
@@ -336,7 +345,7 @@ done
 # code. Growth fails the run where the budgets are enforced: a change that
 # makes a query slower, deeper or bigger must commit the figures it
 # measured (this script has just written them), where the diff shows it.
-# ACCEPT_GROWTH=1 reports growth, and a README that quotes other figures,
+# ACCEPT_GROWTH=1 reports growth, and pages that quote other figures,
 # without failing (to measure a change before committing it).
 step "figures against the committed ones"
 figures_fail=0
@@ -352,23 +361,25 @@ for f in $FIGURES; do
   sed 's/^/  /' <<<"$changes"
   while IFS= read -r change; do grown+=("$f.md: ${change#GREW    }"); done < <(grep '^GREW' <<<"$changes" || true)
 done
-# README.md quotes the three tables whole: each of their rows must be there
-# as measured, or the README states figures nobody measured.
-stale=0
+# The firmware page quotes the three tables whole: each of their rows must be
+# there as measured, or the page states figures nobody measured. README.md's
+# status table quotes the .text of the budgeted firmwares on the M4F and the
+# range of its stacks per precision, checked the same way.
+source "$ROOT/.ci/quoted.sh"
 for f in $FIGURES; do
-  while IFS= read -r line; do
-    grep -Fxq -- "$line" "$ROOT/README.md" || { stale=$((stale + 1)); echo "README.md lacks this row of $f.md: $line"; }
-  done < <(grep '^|' "$FW/$f.md")
+  quotes_rows "$FW/README.md" "$(grep '^|' "$FW/$f.md")"
 done
-if [ "$stale" -gt 0 ]; then
-  if [ "$figures_fail" = 1 ]; then
-    fail "README.md's firmware tables differ from the measured ones in $stale row(s)"
-  else
-    echo "README.md's firmware tables differ from these measurements in $stale row(s) (reported, not failed)"
-  fi
-else
-  echo "README.md quotes the measured tables"
-fi
+summary=()
+for bin in size_1_intersect_const size_2_distance_const size_3_penetration_const size_5_all_f32_const; do
+  summary+=("${LABEL[$bin]} $(kb $((${TEXT[$bin.$M4]:-0} - ${TEXT[size_0_empty.$M4]:-0})))")
+done
+for precision in f32 f64; do
+  summary+=("$(grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' | awk -F'|' -v p="$precision" '
+    $2 == p { s = $6 + 0; if (n++ == 0 || s < lo) lo = s; if (s > hi) hi = s }
+    END { printf "%s: %d to %d B", p, lo, hi }')")
+done
+quotes "$ROOT/README.md" "${summary[@]}"
+quoted_verdict "$figures_fail" || fail "firmware/README.md or README.md quote other figures than the measured ones in $stale place(s)"
 if [ ${#grown[@]} -gt 0 ]; then
   if [ "$figures_fail" = 1 ]; then
     fail "${#grown[@]} figure(s) grew over the committed ones (commit the new firmware/*.md if intended; ACCEPT_GROWTH=1 reports only)"

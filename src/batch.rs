@@ -16,6 +16,20 @@ use crate::Gjk;
 impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
     /// The separation of `a` from each of `others`, in order: `None` where
     /// they overlap.
+    ///
+    /// ```
+    /// use gjk2d::{Circle, Gjk, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let at = |x: f32| Transform::from_translation(Vec2::new(x, 0.0));
+    /// let ball = Circle::new(1.0)?;
+    /// let others = [(ball, at(3.0)?), (ball, at(1.0)?)];
+    /// let found = gjk.distances(&ball, &Transform::IDENTITY, &others);
+    /// assert!((found[0].expect("apart").distance - 1.0).abs() < 1e-6);
+    /// assert!(found[1].is_none()); // overlapping
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     pub fn distances<A, B>(&self, a: &A, ta: &Transform<R>, others: &[(B, Transform<R>)]) -> Vec<Option<Separation<R>>>
     where
         A: SupportMap<R> + ?Sized,
@@ -26,6 +40,19 @@ impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
 
     /// The penetration of `a` into each of `others`, in order: `None` where
     /// they are apart.
+    ///
+    /// ```
+    /// use gjk2d::{Circle, Gjk, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let at = |x: f32| Transform::from_translation(Vec2::new(x, 0.0));
+    /// let ball = Circle::new(1.0)?;
+    /// let found = gjk.penetrations(&ball, &Transform::IDENTITY, &[(ball, at(3.0)?), (ball, at(1.5)?)]);
+    /// assert!(found[0].is_none()); // apart
+    /// assert!((found[1].expect("overlap").depth - 0.5).abs() < 1e-6);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     pub fn penetrations<A, B>(
         &self,
         a: &A,
@@ -41,6 +68,22 @@ impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
 
     /// Every shape the ray hits within `max_length`, nearest first, with
     /// its index in `shapes`. Rays starting inside a shape do not list it.
+    ///
+    /// ```
+    /// use gjk2d::{Circle, Gjk, Ray, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let at = |x: f32| Transform::from_translation(Vec2::new(x, 0.0));
+    /// let post = Circle::new(0.5)?;
+    /// let posts = [(post, at(6.0)?), (post, at(2.0)?), (post, at(-4.0)?)];
+    /// let ray = Ray::new(Vec2::ZERO, Vec2::X)?;
+    /// let hits = gjk.raycast_all(&ray, 0.0, &posts);
+    /// // Nearest first, by index into `posts`; the post behind the ray is not hit.
+    /// assert_eq!(hits.iter().map(|(i, _)| *i).collect::<Vec<_>>(), [1, 0]);
+    /// assert!((hits[0].1.distance - 1.5).abs() < 1e-6);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     pub fn raycast_all<S>(&self, ray: &Ray<R>, max_length: R, shapes: &[(S, Transform<R>)]) -> Vec<(usize, RayHit<R>)>
     where
         S: SupportMap<R>,

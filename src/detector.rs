@@ -41,6 +41,20 @@ impl<R: Real, P> Gjk<R, P> {
     }
 
     /// Whether A and B overlap (touching counts), without computing how much.
+    ///
+    /// ```
+    /// use gjk2d::{Circle, Gjk, Rectangle, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let wall = Rectangle::new(2.0, 1.0)?;
+    /// let ball = Circle::new(0.5)?;
+    /// let near = Transform::from_translation(Vec2::new(1.4, 0.0))?;
+    /// let far = Transform::from_translation(Vec2::new(3.0, 0.0))?;
+    /// assert!(gjk.intersects(&wall, &Transform::IDENTITY, &ball, &near).intersecting);
+    /// assert!(!gjk.intersects(&wall, &Transform::IDENTITY, &ball, &far).intersecting);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     #[cfg_attr(not(target_os = "none"), inline)]
     pub fn intersects<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Detection
     where
@@ -70,6 +84,21 @@ impl<R: Real, P> Gjk<R, P> {
     /// The separation of A and B: `None` means they certainly overlap or
     /// touch. A result with `Status::IterationLimit` is a best guess whose
     /// `error_bound` may exceed its distance.
+    ///
+    /// ```
+    /// use gjk2d::{Capsule, Gjk, Rectangle, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let floor = Rectangle::new(10.0, 1.0)?; // its top face at y = 0.5
+    /// let pill = Capsule::new(Vec2::new(-1.0, 0.0), Vec2::new(1.0, 0.0), 0.25)?;
+    /// let above = Transform::from_translation(Vec2::new(0.0, 2.0))?;
+    /// let sep = gjk.distance(&floor, &Transform::IDENTITY, &pill, &above).expect("apart");
+    /// assert!((sep.distance - 1.25).abs() < 1e-6);
+    /// assert_eq!(sep.normal, Vec2::Y); // from A towards B
+    /// assert!((sep.point_b.y - 1.75).abs() < 1e-6); // the closest point on B
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     pub fn distance<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Separation<R>>
     where
         A: SupportMap<R> + ?Sized,
@@ -97,6 +126,20 @@ impl<R: Real, P> Gjk<R, P> {
     /// The penetration of A and B: `None` means they are certainly apart.
     /// Cores that overlap go to the penetration solver; rounded shapes whose
     /// cores are apart are resolved in closed form from the core distance.
+    ///
+    /// ```
+    /// use gjk2d::{Gjk, Rectangle, Transform};
+    /// use glam::DVec2;
+    ///
+    /// let gjk = Gjk::<f64>::new();
+    /// let box_ = Rectangle::new(1.0, 1.0)?;
+    /// let pushed_in = Transform::from_translation(DVec2::new(0.8, 0.1))?;
+    /// let pen = gjk.penetration(&box_, &Transform::IDENTITY, &box_, &pushed_in).expect("overlap");
+    /// // Moving B by `depth` along `normal` separates the shapes.
+    /// assert!((pen.depth - 0.2).abs() < 1e-12);
+    /// assert_eq!(pen.normal, DVec2::X);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     pub fn penetration<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
     where
         A: SupportMap<R> + ?Sized,
@@ -153,6 +196,26 @@ impl<R: Real, P> Gjk<R, P> {
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
     /// up to `max_length` (zero, negative or infinite: unbounded).
+    ///
+    /// ```
+    /// use gjk2d::{Capsule, Gjk, Ray, RayOutcome, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let pill = Capsule::new(Vec2::new(0.0, -1.0), Vec2::new(0.0, 1.0), 0.5)?;
+    /// let placed = Transform::from_translation(Vec2::new(5.0, 0.0))?;
+    /// let ray = Ray::new(Vec2::ZERO, Vec2::X)?;
+    /// match gjk.raycast(&ray, 0.0, &pill, &placed).outcome {
+    ///     RayOutcome::Hit(hit) => {
+    ///         assert!((hit.distance - 4.5).abs() < 1e-6);
+    ///         assert_eq!(hit.normal, -Vec2::X); // the surface's outward normal
+    ///     }
+    ///     other => panic!("expected a hit, got {other:?}"),
+    /// }
+    /// // At most 3 units long, the same ray misses.
+    /// assert_eq!(gjk.raycast(&ray, 3.0, &pill, &placed).outcome, RayOutcome::Miss);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn raycast<S>(&self, ray: &Ray<R>, max_length: R, shape: &S, transform: &Transform<R>) -> RayCast<R>
     where

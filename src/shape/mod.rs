@@ -70,6 +70,37 @@ pub const NO_FEATURE: u32 = u32::MAX;
 ///
 /// Only [`support`](Self::support), [`center`](Self::center) and
 /// [`bounding_radius`](Self::bounding_radius) are required.
+///
+/// ```
+/// use gjk2d::{Circle, Gjk, SupportMap, Transform};
+/// use glam::Vec2;
+///
+/// /// A square turned 45 degrees, by its half-diagonal.
+/// struct Diamond(f32);
+///
+/// impl SupportMap<f32> for Diamond {
+///     fn support(&self, d: Vec2) -> Vec2 {
+///         if d.x.abs() >= d.y.abs() {
+///             Vec2::new(self.0.copysign(d.x), 0.0)
+///         } else {
+///             Vec2::new(0.0, self.0.copysign(d.y))
+///         }
+///     }
+///     fn center(&self) -> Vec2 {
+///         Vec2::ZERO
+///     }
+///     fn bounding_radius(&self) -> f32 {
+///         self.0
+///     }
+/// }
+///
+/// let gjk = Gjk::<f32>::new();
+/// let ball = Circle::new(0.5)?;
+/// let right = Transform::from_translation(Vec2::new(3.0, 0.0))?;
+/// let sep = gjk.distance(&Diamond(1.0), &Transform::IDENTITY, &ball, &right).expect("apart");
+/// assert!((sep.distance - 1.5).abs() < 1e-6);
+/// # Ok::<(), gjk2d::Error>(())
+/// ```
 pub trait SupportMap<R: Real> {
     /// The farthest point of the core along `direction` (never zero, not
     /// necessarily unit), relative to the reference point.

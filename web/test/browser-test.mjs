@@ -217,7 +217,7 @@ try {
   check(Object.values(times).every((t) => Number.isFinite(t) && t > 0), `times shown: ${JSON.stringify(times)}`);
   log(`time per query (ns, f64, headless): ${JSON.stringify(Object.fromEntries(Object.entries(times).map(([k, v]) => [k, Math.round(v)])))}`);
 
-  // A picture of an overlap, for the README: the polygon pushed into the
+  // A picture of an overlap, for web/README.md: the polygon pushed into the
   // rectangle, the ray aimed at the ellipse.
   await page.click("#reset");
   await page.click("#precision button[data-prec='f32']");

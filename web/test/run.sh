@@ -2,7 +2,9 @@
 # The browser test, end to end: builds the wasm module and the native
 # reference, installs playwright-core (npm ci), serves web/www on a free
 # localhost port, drives Debian's Chromium over it, checks the golden hash in
-# wasm under Node, and stops the server. Exit status: the tests' verdict.
+# wasm under Node, and stops the server. Checks that web/README.md's table of
+# module sizes, and README.md's figures from it, are what this build measures.
+# Exit status: the tests' verdict.
 #
 # Needs: rustup target wasm32-unknown-unknown, node + npm, and
 # `apt-get install -y --no-install-recommends chromium` (/usr/bin/chromium).
@@ -17,6 +19,27 @@ echo "--- npm ci (playwright-core, binaryen's wasm-opt)"
 
 echo "--- wasm module for the page"
 "$web/build.sh"
+
+status=0
+echo "--- module sizes, against web/README.md and README.md"
+# web/README.md's size table must be this build's (web/build.sh --sizes prints
+# its rows), and README.md's status row must quote its figures in KB.
+# ACCEPT_GROWTH=1 reports a difference without failing, to measure a change
+# before committing it.
+sizes="$("$web/build.sh" --sizes)"
+echo "$sizes"
+source "$root/.ci/quoted.sh"
+quotes_rows "$web/README.md" "$sizes"
+kb() { awk -v b="$1" 'BEGIN { printf "%.1f KB", b / 1000 }'; }
+bytes() { grep -F -- "$1" <<<"$sizes" | cut -d'|' -f3 | tr -d ' '; }
+quotes "$root/README.md" "$(kb "$(bytes '`f32` only')") f32" "$(kb "$(bytes '`f64` only')") f64" \
+  "carries both, is $(kb "$(bytes "the page's")")"
+enforce=1
+[ "${ACCEPT_GROWTH:-0}" = 1 ] && enforce=0
+quoted_verdict "$enforce" || {
+  echo "FAILED: module sizes differ from web/README.md's or README.md's in $stale place(s)"
+  status=1
+}
 
 golden=0
 if [ -f "$root/tests/golden_batch.rs" ] && [ -f "$root/tests/golden_hash.txt" ]; then
@@ -42,7 +65,6 @@ for _ in $(seq 50); do
   sleep 0.1
 done
 
-status=0
 echo "--- browser test (Chromium, http://127.0.0.1:$port/)"
 GJK_URL="http://127.0.0.1:$port/" node "$here/browser-test.mjs" || status=1
 if [ $golden = 1 ]; then

@@ -1,4 +1,4 @@
-// The README's firmware example, built by firmware/run.sh so it keeps compiling.
+// The firmware page's example (firmware/README.md), built by firmware/run.sh so it keeps compiling.
 #![no_std]
 #![no_main]
 
