@@ -244,8 +244,13 @@ impl<R: Real> Simplex<R, Witness<R>> {
 impl<R: Real, P> Simplex<R, P> {
     /// Distance from the origin to the simplex's closest point and the unit
     /// normal towards it, in the most precise form for the face it lies on.
-    /// `toward` (B's center minus A's) orients the normal when the distance
-    /// rounds to exactly zero and the edge alone cannot tell its side.
+    /// `toward` (B's center minus A's) orients the normal where the edge's
+    /// distance is within rounding of zero (64 eps of its ends' size, |x| +
+    /// |y|) and its sign says nothing: convex shapes apart or touching have
+    /// their centers on either side of the line between them, so `toward`
+    /// points the normal's way. (An edge of an ellipse and a polygon passing
+    /// within rounding of the origin took its sign from rounding, and gave
+    /// the normal from B towards A.)
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn distance_and_normal(&self, v: V2<R>, toward: V2<R>) -> Option<(R, V2<R>)> {
         if self.len == 2 {
@@ -255,7 +260,9 @@ impl<R: Real, P> Simplex<R, P> {
             // contacts give exact distances (a touching pair gives exactly 0).
             if let Some(unit) = (q.w - p.w).perp().try_normalize() {
                 let signed = unit.dot(p.w);
-                let outward = signed > R::ZERO || (signed == R::ZERO && unit.dot(toward) >= R::ZERO);
+                let size = p.w.x.abs() + p.w.y.abs() + q.w.x.abs() + q.w.y.abs();
+                let rounding = R::from_u32(64) * R::EPSILON * size;
+                let outward = if signed.abs() <= rounding { unit.dot(toward) >= R::ZERO } else { signed > R::ZERO };
                 return if outward { Some((signed, unit)) } else { Some((-signed, -unit)) };
             }
         }
