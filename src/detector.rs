@@ -225,13 +225,8 @@ impl<R: Real, P> Gjk<R, P> {
         let reference = V2::from_glam(shape.reference_point());
         // Into the shape's frame, relative to its reference point: the
         // difference first, so a ray near a far-away shape keeps its precision.
-        // Unrotated shapes skip the rotations on hosts, as scenes often
-        // place them: a rotation by (1, 0) is exact, so the values are the
-        // same but for the sign of a zero.
-        let turned = cfg!(target_os = "none") || transform.sin != R::ZERO || transform.cos != R::ONE;
-        let inverse_rotate = |v: V2<R>| if turned { transform.inverse_rotate(v) } else { v };
-        let origin = inverse_rotate(ray.origin - transform.translation) - reference;
-        let direction = inverse_rotate(ray.direction);
+        let origin = transform.inverse_rotate(ray.origin - transform.translation) - reference;
+        let direction = transform.inverse_rotate(ray.direction);
         let local = if self.closed_form_rays { cast_local_ray(shape, origin, direction, max) } else { None };
         let local = local.unwrap_or_else(|| {
             cast_ray_gjk(
@@ -251,8 +246,7 @@ impl<R: Real, P> Gjk<R, P> {
                 distance: h.distance,
                 // From the world ray, not the local point: one rounding less.
                 point: (ray.origin + ray.direction * h.distance).to_glam(),
-                normal: if turned { transform.rotate(V2::from_glam(h.normal)) } else { V2::from_glam(h.normal) }
-                    .to_glam(),
+                normal: transform.rotate(V2::from_glam(h.normal)).to_glam(),
                 error_bound: hit_error_bound(
                     h.error_bound,
                     h.distance,
