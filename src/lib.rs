@@ -69,9 +69,9 @@ pub use detector::Gjk;
 pub use epa::{Epa, PenetrationEstimate, PenetrationSolver};
 pub use error::Error;
 pub use minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
-pub use ray::{LocalRayCast, Ray};
+pub use ray::Ray;
 pub use real::Real;
-pub use result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+pub use result::{Detection, LocalRayCast, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 pub use shape::{
     Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
     NO_FEATURE,

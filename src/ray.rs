@@ -4,17 +4,13 @@
 
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
-use crate::result::{RayCast, RayHit, RayOutcome, Status};
+use crate::result::{gap_hit, hit, RayCast, RayOutcome, Status};
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 use crate::shape::SMALL_POLYGON_MAX;
 use crate::shape::{at, first_reached, polytope_support, SupportMap};
 use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
 use crate::Error;
-
-/// A ray cast in a shape's local frame: what [`SupportMap::cast_local_ray`]
-/// returns (point and normal local, relative to the reference point).
-pub type LocalRayCast<R> = RayCast<R>;
 
 /// A half-line: an origin and a unit direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,16 +44,6 @@ impl<R: Real> Ray<R> {
     pub fn direction(&self) -> R::Vector {
         self.direction.to_glam()
     }
-}
-
-/// A hit of an exact closed form: no gap across the surface
-/// ([`RayHit::error_bound`] of a local cast); rounding is added in the world.
-fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
-    gap_hit(o, d, t, normal, R::ZERO)
-}
-
-fn gap_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>, gap: R) -> RayOutcome<R> {
-    RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam(), error_bound: gap })
 }
 
 /// [`cast_ray_polygon`] for a polygon of at most [`SMALL_POLYGON_MAX`]

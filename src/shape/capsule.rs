@@ -1,6 +1,7 @@
 use super::{Segment, SupportMap};
-use crate::ray::{cast_ray_capsule, LocalRayCast};
+use crate::ray::cast_ray_capsule;
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 use crate::transform::check_length;
 use crate::Error;
 

@@ -1,6 +1,7 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_disk, LocalRayCast};
+use crate::ray::cast_ray_disk;
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 use crate::transform::{check_length, check_point};
 use crate::Error;
 

@@ -53,8 +53,8 @@ pub use slice::Slice;
 pub(crate) use slice::SliceConst;
 pub use triangle::Triangle;
 
-use crate::ray::LocalRayCast;
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 
 /// The feature id of a support point that is not one of finitely many
 /// vertices (a point on a curve).

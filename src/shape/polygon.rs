@@ -1,7 +1,8 @@
 use super::polygon_frame::Frame;
 use super::{polytope_support, polytope_support_near, searched, SupportMap};
-use crate::ray::{cast_ray_many_sided, cast_ray_polygon, FaceRounding, LocalRayCast};
+use crate::ray::{cast_ray_many_sided, cast_ray_polygon, FaceRounding};
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 use crate::Error;
 use glam::{DVec2, Vec2};
 

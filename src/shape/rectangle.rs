@@ -1,6 +1,7 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_polygon, FaceRounding, LocalRayCast};
+use crate::ray::{cast_ray_polygon, FaceRounding};
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 use crate::transform::check_length;
 use crate::Error;
 

@@ -1,6 +1,7 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_segment, LocalRayCast};
+use crate::ray::cast_ray_segment;
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 use crate::transform::check_point;
 use crate::Error;
 

@@ -1,6 +1,6 @@
 use super::{Polygon, SupportMap};
-use crate::ray::LocalRayCast;
 use crate::real::Real;
+use crate::result::LocalRayCast;
 use crate::Error;
 
 /// A triangle: a three-vertex [`Polygon`] with its own constructor.
