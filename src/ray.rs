@@ -1,10 +1,11 @@
-//! Ray casts: closed forms for polygons, circles, capsules and segments
-//! (exact face normals, no iteration), and GJK ray casting (conservative
-//! advancement, van den Bergen 2004) for every other support map.
+//! Ray casts: the closed form for polygons (exact face normals, no
+//! iteration), and GJK ray casting (conservative advancement, van den Bergen
+//! 2004) for every support map without a closed form. Circles, capsules and
+//! segments cast their own, beside their support (`shape/`).
 
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
-use crate::result::{gap_hit, hit, RayCast, RayOutcome, Status};
+use crate::result::{gap_hit, RayCast, RayOutcome, Status};
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 use crate::shape::SMALL_POLYGON_MAX;
 use crate::shape::{at, first_reached, polytope_support, SupportMap};
@@ -401,133 +402,6 @@ impl<R: Real> Clip<R> {
             }
         })
     }
-}
-
-/// Ray against a disk. The root is taken in the form without cancellation,
-/// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
-/// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
-#[cfg_attr(not(target_os = "none"), inline)]
-pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
-    let m = o - center;
-    // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
-    // too), without a square root.
-    let c = m.length_squared() - r * r;
-    if c <= R::ZERO {
-        return RayCast::closed_form(RayOutcome::Inside);
-    }
-    let b = m.dot(d);
-    // The offset's component across the ray: m = b d + across d⊥.
-    let across = d.cross(m);
-    let p = across.abs();
-    // On hosts one branch for every way to miss, not two: which test a miss
-    // fails is not predictable (past the radius the chord is then taken as
-    // zero, a value never used). Bare metal, with no predictor to miss,
-    // leaves as soon as it knows.
-    let outside = (b >= R::ZERO) | (p > r);
-    if cfg!(target_os = "none") && outside {
-        return RayCast::closed_form(RayOutcome::Miss);
-    }
-    let chord_squared = (r - p) * (r + p);
-    let chord_squared = if cfg!(target_os = "none") { chord_squared } else { chord_squared.max(R::ZERO) };
-    let half_chord = chord_squared.sqrt();
-    let t = c / (-b + half_chord);
-    if outside | (t > max) {
-        return RayCast::closed_form(RayOutcome::Miss);
-    }
-    // The hit point from the center is m + t d = -half_chord d + across d⊥
-    // (b + t = -half_chord): of length r to rounding, with no cancellation
-    // however far the origin, and no second square root on the way.
-    let normal = (d * -half_chord + d.perp() * across) * (R::ONE / r);
-    RayCast::closed_form(hit(o, d, t, normal))
-}
-
-/// Ray against the segment `a`-`a + delta` swept by `r` (> 0, as a
-/// [`Capsule`](crate::Capsule) has). Within the band of the two side lines,
-/// the capsule beyond an end of the core is that end's disk, and the other
-/// disk lies behind it; so the first hit is on the side the ray comes in
-/// through or, where it comes in beyond an end (or starts in the band), on
-/// that end's disk: one disk cast, not a comparison of three hits. A bare
-/// segment has its own cast ([`cast_ray_segment`]), so a firmware with
-/// capsules links no segment cast.
-pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
-    let len2 = delta.length_squared();
-    let rel = o - a;
-    // Closest point of the core to the ray origin decides "inside".
-    let t_axis = (rel.dot(delta) / len2).max(R::ZERO).min(R::ONE);
-    if (rel - delta * t_axis).length() <= r {
-        return RayCast::closed_form(RayOutcome::Inside);
-    }
-    let length = len2.sqrt();
-    let axis = delta * (R::ONE / length);
-    let side = axis.perp();
-    // Height over the core's line, and where along the axis the ray is when
-    // it is in the band (its origin, if it starts there).
-    let h = side.dot(rel);
-    let mut along = axis.dot(rel);
-    if h.abs() > r {
-        // Outside the band: it comes in through the nearer side line or not
-        // at all.
-        let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
-        let dn = side.dot(d);
-        if toward * dn >= R::ZERO {
-            return RayCast::closed_form(RayOutcome::Miss);
-        }
-        let t = (h.abs() - r) / dn.abs();
-        along = axis.dot(rel + d * t);
-        if along >= R::ZERO && along <= length {
-            let outcome = if t <= max { hit(o, d, t, side * toward) } else { RayOutcome::Miss };
-            return RayCast::closed_form(outcome);
-        }
-    }
-    cast_ray_disk(if along < R::ZERO { a } else { a + delta }, r, o, d, max)
-}
-
-/// Ray against the bare segment `a`-`a + delta`. A segment has no inside, so
-/// a ray nearly along its line is ill-conditioned: an end point the ray
-/// passes within rounding distance of counts as hit, as a user expects of a
-/// ray aimed along a wall.
-pub(crate) fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
-    let rel = a - o;
-    let slack = R::from_u32(4) * R::EPSILON;
-    // An origin on the segment (to rounding) is on the shape.
-    let along = -rel.dot(delta);
-    let scale = rel.length() + delta.length();
-    if along >= R::ZERO && along <= delta.length_squared() && delta.cross(rel).abs() <= slack * scale * delta.length() {
-        return RayCast::closed_form(RayOutcome::Inside);
-    }
-    let denominator = d.cross(delta);
-    let mut best: Option<(R, V2<R>)> = None;
-    if denominator != R::ZERO {
-        let t = rel.cross(delta) / denominator;
-        let s = rel.cross(d) / denominator;
-        if s >= R::ZERO && s <= R::ONE && t >= R::ZERO && t <= max {
-            if t == R::ZERO {
-                return RayCast::closed_form(RayOutcome::Inside);
-            }
-            // The face normal on the side the ray comes from.
-            let n = delta.perp();
-            let n = if n.dot(d) > R::ZERO { -n } else { n };
-            best = Some((t, n.try_normalize().unwrap_or(-d)));
-        }
-    }
-    for end in [rel, rel + delta] {
-        let t = end.dot(d);
-        let off = d.cross(end).abs();
-        if t >= R::ZERO
-            && t <= max
-            && off <= slack * (end.length() + delta.length())
-            && best.is_none_or(|(bt, _)| t < bt)
-        {
-            if t == R::ZERO {
-                return RayCast::closed_form(RayOutcome::Inside);
-            }
-            best = Some((t, -d));
-        }
-    }
-    RayCast::closed_form(match best {
-        Some((t, normal)) => hit(o, d, t, normal),
-        None => RayOutcome::Miss,
-    })
 }
 
 /// GJK ray cast on any support map (radius included): advance the ray point
