@@ -11,7 +11,8 @@
 
 use crate::config::EpaConfig;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
-use crate::real::{cyclic, Real, V2};
+use crate::polytope::cyclic;
+use crate::real::{Real, V2};
 use crate::result::Status;
 
 /// The depth and direction of the overlap of two cores, as a penetration

@@ -49,6 +49,7 @@ mod hw_sqrt;
 mod minkowski;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 mod point_polygon;
+mod polytope;
 mod ray;
 mod real;
 mod result;

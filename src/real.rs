@@ -618,15 +618,3 @@ impl<R: Real> Mul<R> for V2<R> {
         Self::new(self.x * s, self.y * s)
     }
 }
-
-/// `items[i % len]`, and `T::default()` for an empty slice: cyclic access to
-/// polygon and polytope vertices that can never panic (the callers' indices
-/// are in range; this keeps bounds checks and divisions by zero provably out
-/// of the code, which the firmware's no-panic link check verifies).
-#[inline(always)]
-pub(crate) fn cyclic<T: Copy + Default>(items: &[T], i: usize) -> T {
-    match items.len() {
-        0 => T::default(),
-        n => items.get(i % n).copied().unwrap_or_default(),
-    }
-}

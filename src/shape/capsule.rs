@@ -101,9 +101,8 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
 /// disk lies behind it; so the first hit is on the side the ray comes in
 /// through or, where it comes in beyond an end (or starts in the band), on
 /// that end's disk: one disk cast, not a comparison of three hits. A bare
-/// segment has its own cast
-/// ([`cast_ray_segment`](super::segment::cast_ray_segment)), so a firmware with
-/// capsules links no segment cast.
+/// segment has its own cast (in `segment.rs`), so a firmware with capsules
+/// links no segment cast.
 fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let len2 = delta.length_squared();
     let rel = o - a;

@@ -1,6 +1,9 @@
 use super::polygon_frame::Frame;
-use super::{polytope_support, polytope_support_near, searched, SupportMap};
-use crate::ray::{cast_ray_many_sided, cast_ray_polygon, FaceRounding};
+use super::SupportMap;
+use crate::polytope::{
+    cast_ray_many_sided, cast_ray_polygon, polytope_support, polytope_support_near, searched, FaceRounding,
+    SCAN_ONLY_MAX,
+};
 use crate::real::{Real, V2};
 use crate::result::LocalRayCast;
 use crate::Error;
@@ -78,7 +81,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     /// count to mispredict. The unused slots then copy vertex 0, which a
     /// strict comparison never prefers. Bare-metal targets scan the vertices
     /// alone: fewer products are fewer cycles there.
-    const SCANS_EVERY_SLOT: bool = cfg!(not(target_os = "none")) && N <= super::SCAN_ONLY_MAX;
+    const SCANS_EVERY_SLOT: bool = cfg!(not(target_os = "none")) && N <= SCAN_ONLY_MAX;
 
     /// What a support scan reads ([`SCANS_EVERY_SLOT`](Self::SCANS_EVERY_SLOT)).
     #[inline(always)]

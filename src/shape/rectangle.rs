@@ -1,5 +1,5 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_polygon, FaceRounding};
+use crate::polytope::{cast_ray_polygon, FaceRounding};
 use crate::real::{Real, V2};
 use crate::result::LocalRayCast;
 use crate::transform::check_length;
