@@ -40,6 +40,7 @@ extern crate std;
 
 pub use glam;
 
+mod checks;
 mod config;
 mod detector;
 mod epa;

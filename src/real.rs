@@ -10,8 +10,9 @@ use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 mod sealed {
-    /// Also how generic code reaches per-type `const fn`s and choices.
-    pub trait Sealed: crate::shape::ConstChecks + crate::shape::SliceConst {
+    /// Also how generic code reaches per-type choices, and per-type work
+    /// through [`per_type`](Self::per_type).
+    pub trait Sealed {
         /// Whether GJK runs in few, flat frames: its loop inlined into each
         /// query and its simplex solve one function, not three nested ones.
         /// Only f64 on bare metal, where soft-float code keeps values in
@@ -62,9 +63,19 @@ mod sealed {
             }
             least
         }
+
+        /// `W`'s work for this type: [`PerType::f32`](super::PerType::f32)
+        /// or [`PerType::f64`](super::PerType::f64).
+        fn per_type<W: super::PerType>(input: W::Input<'_, Self>) -> W::Output<Self>
+        where
+            Self: super::Real;
     }
     impl Sealed for f32 {
         const FLAT_GJK: bool = false;
+        #[inline(always)]
+        fn per_type<W: super::PerType>(input: W::Input<'_, f32>) -> W::Output<f32> {
+            W::f32(input)
+        }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn min_dot8(xs: &[f32; 8], ys: &[f32; 8], d: super::V2<f32>) -> f32 {
@@ -83,6 +94,10 @@ mod sealed {
     }
     impl Sealed for f64 {
         const FLAT_GJK: bool = cfg!(target_os = "none");
+        #[inline(always)]
+        fn per_type<W: super::PerType>(input: W::Input<'_, f64>) -> W::Output<f64> {
+            W::f64(input)
+        }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn min_dot8(xs: &[f64; 8], ys: &[f64; 8], d: super::V2<f64>) -> f64 {
@@ -334,6 +349,20 @@ mod sse2 {
         let lanes = |x: __m128d, at: u32| _mm_movemask_pd(_mm_cmpeq_pd(x, m)) << at;
         first_lane(lanes(a, 0) | lanes(b, 2) | lanes(c, 4) | lanes(e, 6))
     }
+}
+
+/// Work written once for each scalar type, as a `const fn` must be (it
+/// cannot do arithmetic through [`Real`]), which generic code runs as
+/// `R::per_type::<W>(input)`: that is [`f32`](Self::f32) or
+/// [`f64`](Self::f64), chosen when the program is compiled. The checks of a
+/// point and a length, a polygon's framing and a slice's constructor are
+/// written so, in the layers above; this one knows only that there are two
+/// types.
+pub trait PerType {
+    type Input<'a, R: Real>;
+    type Output<R: Real>;
+    fn f32(input: Self::Input<'_, f32>) -> Self::Output<f32>;
+    fn f64(input: Self::Input<'_, f64>) -> Self::Output<f64>;
 }
 
 /// A floating-point scalar gjk2d computes in: `f32` or `f64`.

@@ -56,7 +56,7 @@ macro_rules! const_constructors {
             /// checked when the program is compiled (an invalid one fails the
             /// build) and stored bit for bit as `new` stores it.
             pub const fn new_const(a: $vector, b: $vector, radius: $R) -> Result<Self, Error> {
-                let radius = const_try!(super::polygon_frame::$checks::check_length(radius));
+                let radius = const_try!(crate::checks::$checks::check_length(radius));
                 Ok(Self { core: const_try!(Segment::<$R>::new_const(a, b)), radius })
             }
         }

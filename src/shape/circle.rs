@@ -63,8 +63,8 @@ macro_rules! const_constructors {
             /// [`Circle::at`] as a `const fn` (see [`new_const`](Self::new_const)).
             pub const fn at_const(center: $vector, radius: $R) -> Result<Self, Error> {
                 let center = V2 { x: center.x, y: center.y };
-                const_try!(super::polygon_frame::$checks::check_point(center));
-                Ok(Self { center, radius: const_try!(super::polygon_frame::$checks::check_length(radius)) })
+                const_try!(crate::checks::$checks::check_point(center));
+                Ok(Self { center, radius: const_try!(crate::checks::$checks::check_length(radius)) })
             }
         }
     };

@@ -45,12 +45,10 @@ pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use half_ellipse::HalfEllipse;
 pub use polygon::Polygon;
-pub(crate) use polygon_frame::ConstChecks;
 pub use rectangle::Rectangle;
 pub use rounded::Rounded;
 pub use segment::Segment;
 pub use slice::Slice;
-pub(crate) use slice::SliceConst;
 pub use triangle::Triangle;
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]

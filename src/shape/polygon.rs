@@ -1,4 +1,4 @@
-use super::polygon_frame::Frame;
+use super::polygon_frame::{Frame, Framing};
 use super::SupportMap;
 use crate::polytope::{
     cast_ray_many_sided, cast_ray_polygon, polytope_support, polytope_support_near, searched, FaceRounding,
@@ -47,7 +47,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
         // `memclr` (0.2 KB of flash) in a firmware that needs none.
         let mut vertices: [V2<R>; N] =
             core::array::from_fn(|i| points.get(i).map_or(V2::zero(), |&p| V2::from_glam(p)));
-        let frame = R::frame_polygon(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
+        let frame = R::per_type::<Framing>(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
         if Self::SCANS_EVERY_SLOT {
             let first = vertices.first().copied().unwrap_or_default();
             for slot in vertices.iter_mut().skip(points.len()) {

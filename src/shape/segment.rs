@@ -52,8 +52,8 @@ macro_rules! const_constructors {
             pub const fn new_const(a: $vector, b: $vector) -> Result<Self, Error> {
                 let start = V2 { x: a.x, y: a.y };
                 let end = V2 { x: b.x, y: b.y };
-                const_try!(super::polygon_frame::$checks::check_point(start));
-                const_try!(super::polygon_frame::$checks::check_point(end));
+                const_try!(crate::checks::$checks::check_point(start));
+                const_try!(crate::checks::$checks::check_point(end));
                 let delta = V2 { x: end.x - start.x, y: end.y - start.y };
                 if delta.x == 0.0 && delta.y == 0.0 {
                     return Err(Error::ZeroLength);
