@@ -5,14 +5,14 @@
 //! [`PerType`] (`transform.rs`'s `check_point` and `check_length`), so a point
 //! is valid by one definition at compile time and at run time.
 
+use crate::error::Error;
 use crate::real::{PerType, Real, V2};
-use crate::Error;
 
 macro_rules! checks {
     ($module:ident, $R:ty) => {
         pub(crate) mod $module {
+            use crate::error::Error;
             use crate::real::{Real, V2};
-            use crate::Error;
 
             /// Finite, and within [`Real::MAX_COORDINATE`].
             pub(crate) const fn check_point(p: V2<$R>) -> Result<(), Error> {

@@ -3,13 +3,13 @@
 //! their own (`shape/`): circles, capsules and segments beside their support,
 //! polygons and rectangles through the clip in `polytope/`.
 
+use crate::error::Error;
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
 use crate::result::{gap_hit, RayCast, RayOutcome, Status};
 use crate::shape::SupportMap;
 use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
-use crate::Error;
 
 /// The polygon clip of every edge at once, which the query takes for small
 /// polygons whose types are known when the program is compiled.

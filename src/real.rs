@@ -257,7 +257,7 @@ mod sse2 {
     /// The first of `tail` (vertices from `start` on) whose dot is `top`;
     /// 0 when none is (every dot NaN).
     #[inline(always)]
-    fn first_equal<R: crate::Real>(tail: &[V2<R>], start: usize, d: V2<R>, top: R) -> usize {
+    fn first_equal<R: super::Real>(tail: &[V2<R>], start: usize, d: V2<R>, top: R) -> usize {
         tail.iter().position(|p| p.dot(d) == top).map_or(0, |j| start + j)
     }
 

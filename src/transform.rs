@@ -1,8 +1,8 @@
 //! Placement of a shape: a rotation followed by a translation.
 
 use crate::checks::{CheckLength, CheckPoint};
+use crate::error::Error;
 use crate::real::{Real, V2};
-use crate::Error;
 
 /// A rigid transform: `world = rotation * local + translation`.
 ///

@@ -1,9 +1,9 @@
 use super::circle::cast_ray_disk;
 use super::{Segment, SupportMap};
+use crate::error::Error;
 use crate::real::{Real, V2};
 use crate::result::{hit, LocalRayCast, RayCast, RayOutcome};
 use crate::transform::check_length;
-use crate::Error;
 
 /// A segment swept by a radius (a stadium).
 #[derive(Clone, Copy, Debug, PartialEq)]

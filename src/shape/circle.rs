@@ -1,8 +1,8 @@
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::{Real, V2};
 use crate::result::{hit, LocalRayCast, RayCast, RayOutcome};
 use crate::transform::{check_length, check_point};
-use crate::Error;
 
 /// A disk: a point core swept by its radius.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,8 +1,8 @@
 use super::ellipse::ellipse_support;
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::{Real, V2};
 use crate::transform::check_length;
-use crate::Error;
 
 /// The upper half (y >= 0) of an axis-aligned ellipse centered on the local
 /// origin, as dyn4j's `HalfEllipse`: flat side on the x axis, dome up.

@@ -1,12 +1,12 @@
 use super::polygon_frame::{Frame, Framing};
 use super::SupportMap;
+use crate::error::Error;
 use crate::polytope::{
     cast_ray_many_sided, cast_ray_polygon, polytope_support, polytope_support_near, searched, FaceRounding,
     SCAN_ONLY_MAX,
 };
 use crate::real::{Real, V2};
 use crate::result::LocalRayCast;
-use crate::Error;
 use glam::{DVec2, Vec2};
 
 /// A convex polygon of at most `N` vertices, stored inline (no allocator).

@@ -14,8 +14,8 @@
 //!
 //! [`Real`]: crate::Real
 
+use crate::error::Error;
 use crate::real::{PerType, Real, V2};
-use crate::Error;
 
 /// Where a validated polygon's vertices are stored relative to, and the
 /// bounding circle GJK scales its tolerances by.
@@ -33,8 +33,8 @@ macro_rules! polygon_frame {
         pub(crate) mod $module {
             use super::Frame;
             use crate::checks::$module::{check_length, check_point, max};
+            use crate::error::Error;
             use crate::real::{Real, V2};
-            use crate::Error;
 
             /// Checks the vertices and frames them in place: each finite and
             /// within range, no empty edge, convex, wound once; then put

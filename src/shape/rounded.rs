@@ -1,7 +1,7 @@
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::Real;
 use crate::transform::check_length;
-use crate::Error;
 
 /// Any shape swept by an extra radius (a rounded polygon, a rounded
 /// rectangle). The radius is handled in closed form like a circle's, so a

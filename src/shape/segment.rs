@@ -1,8 +1,8 @@
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::{Real, V2};
 use crate::result::{hit, LocalRayCast, RayCast, RayOutcome};
 use crate::transform::check_point;
-use crate::Error;
 
 /// A line segment: a two-vertex core with no radius.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,6 +1,6 @@
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::{PerType, Real, V2};
-use crate::Error;
 
 /// A circular sector (a pizza slice) with its apex on the local origin,
 /// symmetric about the +x axis, as dyn4j's `Slice`.

@@ -1,7 +1,7 @@
 use super::{Polygon, SupportMap};
+use crate::error::Error;
 use crate::real::Real;
 use crate::result::LocalRayCast;
-use crate::Error;
 
 /// A triangle: a three-vertex [`Polygon`] with its own constructor.
 #[derive(Clone, Debug, PartialEq)]
