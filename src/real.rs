@@ -17,14 +17,11 @@ mod sealed {
         /// query and its simplex solve one function, not three nested ones.
         /// Only f64 on bare metal, where soft-float code keeps values in
         /// callee-saved registers that every frame saves on entry, and an
-        /// f64 takes two of them. In f64 on the M4F (a walk of the call
-        /// graph in the disassembly) the nested solve took 0.70 KB of stack
-        /// and the flat one 0.42 KB, and the distance query 1.59 KB nested,
-        /// 1.32 KB with the flat solve and 1.14 KB with the loop inlined too.
-        /// In f32 the shared and nested functions are the smaller code (one
-        /// copy of the loop for distance and penetration, one of the segment
-        /// solve instead of four), which the flash budgets need, and its
-        /// stacks are under 1 KB either way. Hosts and wasm keep their own
+        /// f64 takes two of them: fewer frames are less stack. In f32 the
+        /// shared and nested functions are the smaller code (one copy of the
+        /// loop for distance and penetration, one of the segment solve
+        /// instead of four), which the flash budgets need, and its stacks
+        /// are within budget either way. Hosts and wasm keep their own
         /// inlining.
         const FLAT_GJK: bool;
 
@@ -160,10 +157,11 @@ mod sse2 {
 
     /// The first vertex of largest dot product, in two passes: the maximum
     /// (two chains of four lanes), then the first vertex whose dot equals
-    /// it. Carrying an index in every lane cost as much again as the dots;
-    /// the second pass compares the dots the first kept (of up to 64
-    /// vertices; beyond, it computes them again) and stops at the vertex. The dots round as the scalar ones (`x dx +
-    /// y dy`), so equality finds the very vertex, ties the first of them.
+    /// it. Carrying an index in every lane would cost as much again as the
+    /// dots; the second pass compares the dots the first kept (of up to 64
+    /// vertices; beyond, it computes them again) and stops at the vertex.
+    /// The dots round as the scalar ones (`x dx + y dy`), so equality finds
+    /// the very vertex, ties the first of them.
     #[target_feature(enable = "sse2")]
     #[inline]
     fn running_max_f32(v: &[V2<f32>], d: V2<f32>) -> usize {
@@ -417,7 +415,8 @@ pub trait Real:
     /// Veltkamp's splitter, `2^ceil(p/2) + 1` for a `p`-bit significand: splits
     /// a value into two halves whose products are exact (Dekker's
     /// two-product), so exact predicates need no fma. An fma is software on
-    /// Cortex-M4F for f32 (libm's fmaf goes through soft f64) and costs kilobytes.
+    /// Cortex-M4F for f32 (libm's fmaf goes through soft f64, which f32
+    /// firmware would then link).
     const SPLITTER: Self;
 
     fn vector(x: Self, y: Self) -> Self::Vector;
@@ -576,8 +575,8 @@ impl<R: Real> V2<R> {
         self.try_length_and_unit().map(|(_, unit)| unit)
     }
     /// [`try_normalize`](Self::try_normalize) inlined everywhere: for EPA's
-    /// edge normals, one per support point (5% of a penetration query's
-    /// instructions on the M4F as a call).
+    /// edge normals, one per support point, each of which would otherwise
+    /// pay for a call.
     #[inline(always)]
     pub fn try_normalize_inlined(self) -> Option<Self> {
         self.try_length_and_unit_inlined().map(|(_, unit)| unit)
@@ -585,9 +584,8 @@ impl<R: Real> V2<R> {
     /// The length and the unit vector, with the care of
     /// [`try_normalize`](Self::try_normalize): one definition for both.
     ///
-    /// Not inlined on bare metal: called from a dozen places, inlined it
-    /// measured 1.6 KB more in a firmware with every shape and query on the
-    /// M4F, and 0.3 KB more in one with polygon penetration.
+    /// Not inlined on bare metal: called from a dozen places, one copy
+    /// serves them all.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline)]
     pub fn try_length_and_unit(self) -> Option<(R, Self)> {

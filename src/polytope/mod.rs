@@ -47,9 +47,8 @@ pub(crate) const fn searched<const N: usize>(len: usize) -> bool {
 /// the origin.
 ///
 /// Out of line on bare-metal targets, like [`polytope_support_near`]: one
-/// copy then serves both shapes of a pair and every call site: 0.32 KB less
-/// flash with every shape and query on the M4F, for 12 B more in a firmware
-/// with polygons alone. Hosts inline it for speed.
+/// copy then serves both shapes of a pair and every call site. Hosts inline
+/// it for speed.
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {

@@ -8,12 +8,10 @@
 //!
 //! On bare-metal targets a shape's support code, where it is more than a
 //! few instructions, is one function out of line, which the trait's two
-//! support methods (`support`, `support_feature`) call. Inlined, each
-//! method held its own copy, and a firmware that reaches shapes through
-//! `dyn SupportMap` links every method of every shape: 1.0 KB of flash
-//! with every shape and query on the M4F (when there were three support
-//! methods). The call costs an ellipse's GJK ray cast 2% more instructions
-//! there (its distance query measured 5% fewer). Hosts inline it for speed.
+//! support methods (`support`, `support_feature`) call: inlined, each
+//! method would hold its own copy, and a firmware that reaches shapes
+//! through `dyn SupportMap` links every method of every shape. The call
+//! costs a few instructions there; hosts inline it for speed.
 //!
 //! The trait has no method that no query calls through `dyn`: each one is
 //! a function per shape in every firmware that uses trait objects.
@@ -136,7 +134,7 @@ pub trait SupportMap<R: Real> {
     /// scanning or searching all of them. Shapes without such a walk ignore
     /// it, as the default does. One method, not one with the hint and one
     /// without: through `dyn SupportMap` every method of every shape is
-    /// linked, and the second was dead weight in every vtable.
+    /// linked, and a second would be dead weight in every vtable.
     fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
         let _ = near;
         (self.support(direction), NO_FEATURE)
@@ -145,8 +143,8 @@ pub trait SupportMap<R: Real> {
     /// Whether the core is a polytope: every [`support_feature`](Self::support_feature)
     /// is a vertex with an id, never [`NO_FEATURE`]. A penetration solver then
     /// leaves out its work for curved boundaries, and a firmware whose shapes
-    /// are all polytopes links none of it (1.1 KB of flash with EPA on the
-    /// M4F). The default, false, is always safe: it only keeps that work.
+    /// are all polytopes links none of it. The default, false, is always
+    /// safe: it only keeps that work.
     fn is_polytope(&self) -> bool {
         false
     }

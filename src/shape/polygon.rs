@@ -44,7 +44,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
             return Err(Error::OverCapacity);
         }
         // Each slot written once, not zeroed first: zeroing is a call to
-        // `memclr` (0.2 KB of flash) in a firmware that needs none.
+        // `memclr`, in a firmware that needs none.
         let mut vertices: [V2<R>; N] =
             core::array::from_fn(|i| points.get(i).map_or(V2::zero(), |&p| V2::from_glam(p)));
         let frame = R::per_type::<Framing>(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
@@ -141,8 +141,7 @@ macro_rules! from_array {
             /// as it stores them; but `const`, so a polygon declared as a
             /// constant is checked when the program is compiled. An invalid
             /// one fails the build, and the program carries neither the
-            /// checks (1.7 KB on a Cortex-M4F) nor a copy of the vertices in
-            /// RAM:
+            /// checks nor a copy of the vertices in RAM:
             ///
             /// ```
             /// # use gjk2d::Polygon;
