@@ -4,6 +4,7 @@
 use std::vec::Vec;
 
 use crate::config::EpaConfig;
+use crate::detector::Gjk;
 use crate::epa::{expand, PenetrationEstimate, PenetrationSolver};
 use crate::minkowski::{MinkowskiDifference, SupportPoint};
 use crate::ray::Ray;
@@ -11,7 +12,6 @@ use crate::real::Real;
 use crate::result::{Penetration, RayHit, Separation};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
-use crate::Gjk;
 
 impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
     /// The separation of `a` from each of `others`, in order: `None` where

@@ -4,7 +4,8 @@
 //! times the size of the pair (the larger bounding radius). An absolute
 //! tolerance is what makes today's peers fail on tiny and huge shapes.
 
-use crate::{Error, Real};
+use crate::error::Error;
+use crate::real::Real;
 
 /// The minimum for every iteration limit, as in dyn4j.
 pub const MIN_ITERATIONS: u32 = 5;

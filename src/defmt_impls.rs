@@ -1,6 +1,6 @@
 //! `defmt::Format` for every public data type. glam's vectors have no
-//! `Format`, and `Debug2Format` would cost kilobytes of flash, so vectors
-//! are written as `(x, y)` by hand.
+//! `Format`, and `Debug2Format` would link `core::fmt`'s formatting into
+//! the firmware, so vectors are written as `(x, y)` by hand.
 
 use defmt::{write, Format, Formatter};
 

@@ -178,7 +178,7 @@ impl<R: Real, P> Gjk<R, P> {
         // own: this frame keeps only the pair and the enclosing simplex's
         // points while the solver's polytope is on the stack. Matched by
         // reference: moved out, the points would be copied within this frame
-        // (48 B more peak stack in f32 on the M4F).
+        // too, at the query's peak stack.
         match core_proximity(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             Proximity::Overlapping(ref enclosing) => {
                 let estimate = self.solver.solve(&pair, enclosing.points());
@@ -291,8 +291,8 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
 /// towards the tangent moves its hit that much more (on a curve, at most
 /// `sqrt(2 r e)`, which `e / cos` covers with the computed `cos`). At most
 /// the distance plus the shape's diameter, so never inf or NaN. One
-/// formula for every shape, out of line on bare metal: per cast, each
-/// bound cost flash a firmware with rays pays.
+/// formula for every shape, out of line on bare metal: a bound per cast
+/// would be flash that every firmware with rays pays.
 #[cfg_attr(target_os = "none", inline(never))]
 fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R>, size: R) -> R {
     let eps = R::EPSILON;
@@ -456,8 +456,8 @@ where
 {
     // What the simplex carries. On bare metal, the distance query's witness
     // points, though penetration needs none: one copy of the GJK loop then
-    // serves both queries, 1.1 KB less flash on the M4F. Elsewhere nothing:
-    // a smaller simplex is a faster one.
+    // serves both queries. Elsewhere nothing: a smaller simplex is a faster
+    // one.
     #[cfg(target_os = "none")]
     let mut simplex = None::<Simplex<R, Witness<R>>>;
     #[cfg(not(target_os = "none"))]

@@ -11,7 +11,8 @@
 
 use crate::config::EpaConfig;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
-use crate::real::{cyclic, Real, V2};
+use crate::polytope::cyclic;
+use crate::real::{Real, V2};
 use crate::result::Status;
 
 /// The depth and direction of the overlap of two cores, as a penetration
@@ -138,12 +139,11 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
         self
     }
     // Shifted by swaps of neighbours, not `Vec::insert`: a shift between
-    // overlapping slots is a `memmove` call, and on a microcontroller that
-    // links 1.5 KB of flash nothing else here needs. A polytope has a few
-    // dozen corners at most; the swaps cost no more than the shift. An
-    // index past the end leaves the corner last (`move_item` stops at the
-    // end); without a check of its own this is inlined into EPA, 84 B less
-    // flash on the M4F.
+    // overlapping slots is a `memmove` call, which a microcontroller would
+    // link for this alone. A polytope has a few dozen corners at most; the
+    // swaps cost no more than the shift. An index past the end leaves the
+    // corner last (`move_item` stops at the end), so this needs no check of
+    // its own and is small enough to inline into EPA.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
         if self.push(c).is_err() {
             return false;
@@ -213,9 +213,8 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
 ) -> PenetrationEstimate<R> {
     let curved = !difference.is_polytope();
     // A closure, inlined where it is called (the loop, and the polish for
-    // curved cores): as a function out of line on bare metal it put a frame
-    // of its own under EPA's, 64 B more peak stack for a penetration query
-    // in f32 on the M4F.
+    // curved cores): a function out of line on bare metal would put a frame
+    // of its own under EPA's, at the penetration query's peak stack.
     let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
@@ -288,7 +287,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         }
         // A support equal to an end of the edge: exactly no progress (equal
         // vertex ids give equal points, computed the same way). As one
-        // `contains`, 32 B less flash on the M4F than two `==`.
+        // `contains`, which compiles smaller than two `==`.
         let repeated = [p.w, q.w].contains(&w.w);
         if repeated || upper - lower <= tolerance {
             break (i, lower, Status::Converged);
@@ -441,8 +440,8 @@ fn finish_curved<R: Real, S: Storage<R>>(
 }
 
 /// The support function `h(u)` along `u` and its slope `s(u) . perp(u)`:
-/// one out-of-line copy of the support call for every place the polish
-/// evaluates them (each inlined copy cost 0.13 KB of flash on the M4F).
+/// one out-of-line copy of the support call on bare metal for every place
+/// the polish evaluates them, not an inlined copy at each.
 #[cfg_attr(target_os = "none", inline(never))]
 fn support_along<R: Real>(support: &impl Fn(V2<R>) -> Corner<R>, u: V2<R>) -> (R, R) {
     let w = support(u).w;

@@ -71,9 +71,9 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, A, B> {
     /// Distance between the cores (radii not included): [`distance_loop`],
     /// inlined into each query where the scalar asks for flat frames
-    /// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where that took 0.17 KB
-    /// off the distance query's stack on the M4F). Elsewhere one shared
-    /// copy, which keeps the f32 flash budgets.
+    /// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where that keeps the
+    /// distance query's stack smaller). Elsewhere one shared copy, which
+    /// keeps the f32 flash budgets.
     #[inline(always)]
     pub(crate) fn core_distance<'s, P: Payload<R>>(
         &self,
@@ -102,11 +102,11 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
 /// GJK's distance loop: see [`Pair::core_distance`].
 ///
 /// The simplex lives in the caller's `slot` (pass `None`), started here and
-/// reduced in place: returned by value it was copied twice (into the result,
-/// and out of its start value), which linked `memcpy` into firmware that had
-/// no other use for it. Started here rather than by the caller, a firmware
-/// with both the distance and the penetration query has one copy of the
-/// start (0.11 KB less on the M4F).
+/// reduced in place: returned by value it would be copied twice (into the
+/// result, and out of its start value), which links `memcpy` into firmware
+/// that has no other use for it. Started here rather than by the caller, a
+/// firmware with both the distance and the penetration query has one copy
+/// of the start.
 #[inline(always)]
 fn distance_loop<'s, R, A, B, P>(
     pair: &Pair<'_, R, A, B>,
@@ -248,9 +248,8 @@ where
     let reach2 = reach * reach;
     // The gap tolerance, for curved cores only (computed on first use).
     let mut tolerance = None;
-    // One support call, at the top of the loop, for the first point too:
-    // a second inlined copy of it for the start cost 48 B of flash in a
-    // firmware with the intersection test alone.
+    // One support call, at the top of the loop, for the first point too,
+    // not a second inlined copy of it for the start.
     let mut simplex: Simplex<R, ()> = Simplex::empty();
     let mut direction = pair.first_direction;
     let (mut v, mut vv) = (V2::zero(), R::ZERO);

@@ -1,10 +1,9 @@
 //! f32 square root in one instruction on hard-float ARM.
 //!
 //! libm has no ARM path: on a Cortex-M4F its `sqrtf` is the portable integer
-//! algorithm, 0.2 KB of code plus a 256-byte table in every firmware that
-//! normalises a vector (measured on the size firmwares), where the FPU's
-//! `vsqrt.f32` is one instruction (a capsule ray cast went from 944 to 352
-//! instructions with it, QEMU's count). Both round correctly, so results stay
+//! algorithm, whose code and table every firmware that normalises a vector
+//! carries and whose integer arithmetic every call runs, where the FPU's
+//! `vsqrt.f32` is one instruction. Both round correctly, so results stay
 //! bit-identical across targets (the golden hash checks it on the M4F).
 //!
 //! The instruction lives in a two-instruction assembly function: stable

@@ -40,6 +40,7 @@ extern crate std;
 
 pub use glam;
 
+mod checks;
 mod config;
 mod detector;
 mod epa;
@@ -49,6 +50,7 @@ mod hw_sqrt;
 mod minkowski;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 mod point_polygon;
+mod polytope;
 mod ray;
 mod real;
 mod result;
@@ -69,9 +71,9 @@ pub use detector::Gjk;
 pub use epa::{Epa, PenetrationEstimate, PenetrationSolver};
 pub use error::Error;
 pub use minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
-pub use ray::{LocalRayCast, Ray};
+pub use ray::Ray;
 pub use real::Real;
-pub use result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+pub use result::{Detection, LocalRayCast, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 pub use shape::{
     Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
     NO_FEATURE,

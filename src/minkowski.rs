@@ -67,7 +67,7 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     /// B's center minus A's center: orients a normal the simplex cannot.
     pub centers: V2<R>,
     /// GJK's first search direction, from A's center towards B's, chosen
-    /// here once: in each GJK loop the choice was an inlined copy.
+    /// here once, not in an inlined copy in each GJK loop.
     pub first_direction: V2<R>,
     /// A's placement, for answers in world coordinates.
     frame: &'s Transform<R>,
@@ -174,11 +174,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// [`support`](Self::support) for the queries that ask for supports in
     /// several places (distance, EPA): one out-of-line copy on bare-metal
-    /// targets, where each inlined copy costs flash (0.8 KB in a firmware with
-    /// EPA on two polygons on the M4F, 1.7 KB with every shape and query). The
-    /// intersection test keeps the inlined one where the shapes' types are
-    /// known ([`shapes_known`](Self::shapes_known)): there the compiler sees
-    /// that a polygon's ids are never [`NO_ID`] and drops the code for curved
+    /// targets, where each inlined copy costs flash. The intersection test
+    /// keeps the inlined one where the shapes' types are known
+    /// ([`shapes_known`](Self::shapes_known)): there the compiler sees that a
+    /// polygon's ids are never [`NO_ID`] and drops the code for curved
     /// shapes.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline(always))]

@@ -6,8 +6,8 @@
 //! Worked in the pair's frame (A's, relative to A's reference point), as every
 //! query is.
 
+use crate::polytope::SMALL_POLYGON_MAX;
 use crate::real::{Real, V2};
-use crate::shape::SMALL_POLYGON_MAX;
 
 const M: usize = SMALL_POLYGON_MAX;
 

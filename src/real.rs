@@ -10,20 +10,18 @@ use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 mod sealed {
-    /// Also how generic code reaches per-type `const fn`s and choices.
-    pub trait Sealed: crate::shape::ConstChecks + crate::shape::SliceConst {
+    /// Also how generic code reaches per-type choices, and per-type work
+    /// through [`per_type`](Self::per_type).
+    pub trait Sealed {
         /// Whether GJK runs in few, flat frames: its loop inlined into each
         /// query and its simplex solve one function, not three nested ones.
         /// Only f64 on bare metal, where soft-float code keeps values in
         /// callee-saved registers that every frame saves on entry, and an
-        /// f64 takes two of them. In f64 on the M4F (a walk of the call
-        /// graph in the disassembly) the nested solve took 0.70 KB of stack
-        /// and the flat one 0.42 KB, and the distance query 1.59 KB nested,
-        /// 1.32 KB with the flat solve and 1.14 KB with the loop inlined too.
-        /// In f32 the shared and nested functions are the smaller code (one
-        /// copy of the loop for distance and penetration, one of the segment
-        /// solve instead of four), which the flash budgets need, and its
-        /// stacks are under 1 KB either way. Hosts and wasm keep their own
+        /// f64 takes two of them: fewer frames are less stack. In f32 the
+        /// shared and nested functions are the smaller code (one copy of the
+        /// loop for distance and penetration, one of the segment solve
+        /// instead of four), which the flash budgets need, and its stacks
+        /// are within budget either way. Hosts and wasm keep their own
         /// inlining.
         const FLAT_GJK: bool;
 
@@ -62,9 +60,19 @@ mod sealed {
             }
             least
         }
+
+        /// `W`'s work for this type: [`PerType::f32`](super::PerType::f32)
+        /// or [`PerType::f64`](super::PerType::f64).
+        fn per_type<W: super::PerType>(input: W::Input<'_, Self>) -> W::Output<Self>
+        where
+            Self: super::Real;
     }
     impl Sealed for f32 {
         const FLAT_GJK: bool = false;
+        #[inline(always)]
+        fn per_type<W: super::PerType>(input: W::Input<'_, f32>) -> W::Output<f32> {
+            W::f32(input)
+        }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn min_dot8(xs: &[f32; 8], ys: &[f32; 8], d: super::V2<f32>) -> f32 {
@@ -83,6 +91,10 @@ mod sealed {
     }
     impl Sealed for f64 {
         const FLAT_GJK: bool = cfg!(target_os = "none");
+        #[inline(always)]
+        fn per_type<W: super::PerType>(input: W::Input<'_, f64>) -> W::Output<f64> {
+            W::f64(input)
+        }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn min_dot8(xs: &[f64; 8], ys: &[f64; 8], d: super::V2<f64>) -> f64 {
@@ -145,10 +157,11 @@ mod sse2 {
 
     /// The first vertex of largest dot product, in two passes: the maximum
     /// (two chains of four lanes), then the first vertex whose dot equals
-    /// it. Carrying an index in every lane cost as much again as the dots;
-    /// the second pass compares the dots the first kept (of up to 64
-    /// vertices; beyond, it computes them again) and stops at the vertex. The dots round as the scalar ones (`x dx +
-    /// y dy`), so equality finds the very vertex, ties the first of them.
+    /// it. Carrying an index in every lane would cost as much again as the
+    /// dots; the second pass compares the dots the first kept (of up to 64
+    /// vertices; beyond, it computes them again) and stops at the vertex.
+    /// The dots round as the scalar ones (`x dx + y dy`), so equality finds
+    /// the very vertex, ties the first of them.
     #[target_feature(enable = "sse2")]
     #[inline]
     fn running_max_f32(v: &[V2<f32>], d: V2<f32>) -> usize {
@@ -242,7 +255,7 @@ mod sse2 {
     /// The first of `tail` (vertices from `start` on) whose dot is `top`;
     /// 0 when none is (every dot NaN).
     #[inline(always)]
-    fn first_equal<R: crate::Real>(tail: &[V2<R>], start: usize, d: V2<R>, top: R) -> usize {
+    fn first_equal<R: super::Real>(tail: &[V2<R>], start: usize, d: V2<R>, top: R) -> usize {
         tail.iter().position(|p| p.dot(d) == top).map_or(0, |j| start + j)
     }
 
@@ -336,6 +349,20 @@ mod sse2 {
     }
 }
 
+/// Work written once for each scalar type, as a `const fn` must be (it
+/// cannot do arithmetic through [`Real`]), which generic code runs as
+/// `R::per_type::<W>(input)`: that is [`f32`](Self::f32) or
+/// [`f64`](Self::f64), chosen when the program is compiled. The checks of a
+/// point and a length, a polygon's framing and a slice's constructor are
+/// written so, in the layers above; this one knows only that there are two
+/// types.
+pub trait PerType {
+    type Input<'a, R: Real>;
+    type Output<R: Real>;
+    fn f32(input: Self::Input<'_, f32>) -> Self::Output<f32>;
+    fn f64(input: Self::Input<'_, f64>) -> Self::Output<f64>;
+}
+
 /// A floating-point scalar gjk2d computes in: `f32` or `f64`.
 ///
 /// Sealed: the error bounds gjk2d states are derived for IEEE binary32 and
@@ -388,7 +415,8 @@ pub trait Real:
     /// Veltkamp's splitter, `2^ceil(p/2) + 1` for a `p`-bit significand: splits
     /// a value into two halves whose products are exact (Dekker's
     /// two-product), so exact predicates need no fma. An fma is software on
-    /// Cortex-M4F for f32 (libm's fmaf goes through soft f64) and costs kilobytes.
+    /// Cortex-M4F for f32 (libm's fmaf goes through soft f64, which f32
+    /// firmware would then link).
     const SPLITTER: Self;
 
     fn vector(x: Self, y: Self) -> Self::Vector;
@@ -547,8 +575,8 @@ impl<R: Real> V2<R> {
         self.try_length_and_unit().map(|(_, unit)| unit)
     }
     /// [`try_normalize`](Self::try_normalize) inlined everywhere: for EPA's
-    /// edge normals, one per support point (5% of a penetration query's
-    /// instructions on the M4F as a call).
+    /// edge normals, one per support point, each of which would otherwise
+    /// pay for a call.
     #[inline(always)]
     pub fn try_normalize_inlined(self) -> Option<Self> {
         self.try_length_and_unit_inlined().map(|(_, unit)| unit)
@@ -556,9 +584,8 @@ impl<R: Real> V2<R> {
     /// The length and the unit vector, with the care of
     /// [`try_normalize`](Self::try_normalize): one definition for both.
     ///
-    /// Not inlined on bare metal: called from a dozen places, inlined it
-    /// measured 1.6 KB more in a firmware with every shape and query on the
-    /// M4F, and 0.3 KB more in one with polygon penetration.
+    /// Not inlined on bare metal: called from a dozen places, one copy
+    /// serves them all.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline)]
     pub fn try_length_and_unit(self) -> Option<(R, Self)> {
@@ -616,17 +643,5 @@ impl<R: Real> Mul<R> for V2<R> {
     #[inline(always)]
     fn mul(self, s: R) -> Self {
         Self::new(self.x * s, self.y * s)
-    }
-}
-
-/// `items[i % len]`, and `T::default()` for an empty slice: cyclic access to
-/// polygon and polytope vertices that can never panic (the callers' indices
-/// are in range; this keeps bounds checks and divisions by zero provably out
-/// of the code, which the firmware's no-panic link check verifies).
-#[inline(always)]
-pub(crate) fn cyclic<T: Copy + Default>(items: &[T], i: usize) -> T {
-    match items.len() {
-        0 => T::default(),
-        n => items.get(i % n).copied().unwrap_or_default(),
     }
 }

@@ -1,7 +1,7 @@
 //! What the queries return. Every result carries how it ended and how many
 //! iterations it took, so a caller can tell an answer from a best guess.
 
-use crate::Real;
+use crate::real::{Real, V2};
 
 /// How a query ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -125,4 +125,19 @@ impl<R: Real> RayCast<R> {
     pub(crate) fn closed_form(outcome: RayOutcome<R>) -> Self {
         Self { outcome, iterations: 0, status: Status::Converged }
     }
+}
+
+/// A ray cast in a shape's local frame: what
+/// [`SupportMap::cast_local_ray`](crate::SupportMap::cast_local_ray) returns
+/// (point and normal local, relative to the reference point).
+pub type LocalRayCast<R> = RayCast<R>;
+
+/// A hit of an exact closed form: no gap across the surface
+/// ([`RayHit::error_bound`] of a local cast); rounding is added in the world.
+pub(crate) fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcome<R> {
+    gap_hit(o, d, t, normal, R::ZERO)
+}
+
+pub(crate) fn gap_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>, gap: R) -> RayOutcome<R> {
+    RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam(), error_bound: gap })
 }

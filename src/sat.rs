@@ -9,8 +9,9 @@
 //! (B's vertices placed there once), as every query does.
 
 use crate::minkowski::Pair;
+use crate::polytope::SMALL_POLYGON_MAX;
 use crate::real::{Real, V2};
-use crate::shape::{SupportMap, SMALL_POLYGON_MAX};
+use crate::shape::SupportMap;
 
 const M: usize = SMALL_POLYGON_MAX;
 

@@ -55,9 +55,8 @@ impl<R: Real> Payload<R> for Witness<R> {
         self.weight = weight;
     }
     /// GJK distance and the GJK ray cast both solve this simplex: one
-    /// copy then serves both (0.2 KB less flash with every query on the
-    /// M4F), and a firmware that calls it from one place still gets it
-    /// inlined.
+    /// copy then serves both, and a firmware that calls it from one place
+    /// still gets it inlined.
     const SHARED_SOLVE: bool = true;
 }
 
@@ -96,7 +95,7 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     }
 
     /// No vertex yet, the slots holding copies of `filler`: all zeros
-    /// would be a call to `memclr` on bare metal (0.17 KB of flash).
+    /// would be a call to `memclr` on bare metal.
     pub fn empty_like(filler: Vertex<R, P>) -> Self {
         let free = Vertex { id: NO_ID, ..filler };
         Self { verts: [free, free, free], len: 0 }
@@ -150,9 +149,8 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
 
     #[inline]
     fn solve_inline(&mut self) -> Closest<R> {
-        // The points by value, in registers: copied into an array in memory
-        // for a reference, they cost 56 B of flash in the firmware with the
-        // intersection test alone (and 48 B with every query).
+        // The points by value, in registers: an array in memory, for a
+        // reference, takes more code to fill and read.
         let [p, q, r] = &self.verts;
         let face = closest_face([p.w, q.w, r.w], self.len);
         self.keep(face)
@@ -179,9 +177,9 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     fn keep_edge(&mut self, (i, j): (usize, usize), Weights { first, second, sum }: Weights<R>) {
         // The vertex left out gets the third's place: one copy, from a
         // constant slot (a copy between slots the compiler cannot tell apart
-        // becomes a call to `memmove`, 1.5 KB of flash in a firmware that
-        // needs nothing else of it). The edge may come out reversed, which
-        // nothing downstream minds.
+        // becomes a call to `memmove`, which a firmware would link for this
+        // alone). The edge may come out reversed, which nothing downstream
+        // minds.
         let (slot_0, slot_1) = match (i, j) {
             (1, 2) => {
                 self.verts[0] = self.verts[2];
@@ -295,9 +293,8 @@ struct Weights<R> {
 /// Only a dispatch: the geometry it calls ([`segment_foot`],
 /// [`closest_triangle_edge`]) is one out-of-line copy on bare metal, shared
 /// by every payload. The dispatch itself is left to the compiler there,
-/// which inlines it into each GJK loop: out of line it measured 160 B more
-/// in the M4F firmware with the intersection test alone and 144 B more with
-/// distance. Hosts inline it everywhere for speed.
+/// which inlines it into each GJK loop, where it is smaller than a call.
+/// Hosts inline it everywhere for speed.
 #[cfg_attr(target_os = "none", inline)]
 #[cfg_attr(not(target_os = "none"), inline(always))]
 fn closest_face<R: Real>(w: [V2<R>; 3], len: usize) -> Face<R> {
@@ -322,8 +319,8 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// Out of line on bare metal in f32: its frame (three feet) is then only
 /// on the stack while a triangle is solved, not in every segment solve.
 /// Inlined with the segment solve where the scalar asks for flat frames
-/// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where the two frames took
-/// 0.27 KB more stack than the one).
+/// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where one frame takes
+/// less stack than two).
 #[inline(always)]
 fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
     if R::FLAT_GJK {
@@ -346,8 +343,8 @@ fn triangle_edge_body<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFo
     // The origin is on the inner side of edge i->j when cross(wi, wj)
     // has the sign of the area (zero counts as inside: touching).
     let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
-    // Each side's verdict once: the closure inlined twice (the enclosure
-    // test and the edge loop) cost flash.
+    // Each side's verdict once, not in a closure inlined twice (the
+    // enclosure test and the edge loop): one copy of the code.
     let outside = sides.map(|side| {
         if area > R::ZERO {
             side < R::ZERO
@@ -403,9 +400,9 @@ enum Foot<R> {
 /// f32), keep the nearer end: as good as rounding allows.
 ///
 /// Out of line on bare metal in f32: the triangle's unrolled loop would
-/// otherwise hold three copies and the segment a fourth (96 B more flash in
-/// each firmware on the M4F). Inlined where the scalar asks for flat
-/// frames (`FLAT_GJK`, in `real.rs`), and on hosts for speed.
+/// otherwise hold three copies and the segment a fourth. Inlined where the
+/// scalar asks for flat frames (`FLAT_GJK`, in `real.rs`), and on hosts for
+/// speed.
 #[inline(always)]
 fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     if R::FLAT_GJK {

@@ -3,10 +3,10 @@
 //! (a [`Slice`](crate::Slice)) are computed by the compiler, to the same bits.
 //!
 //! libm's `sinf`/`cosf` reduce the angle in f64: on a Cortex-M4F (single
-//! precision FPU) or an M0 that links about 6 KB of soft double arithmetic
-//! (`rem_pio2f`, `__muldf3`, `__adddf3`, ...) for one rotation. These stay in
-//! f32 and take a few hundred bytes, and being plain IEEE operations without
-//! fused multiply-adds, they give the same bits on every target.
+//! precision FPU) or an M0 that links soft double arithmetic (`rem_pio2f`,
+//! `__muldf3`, `__adddf3`, ...) for one rotation. These stay in f32, a few
+//! small kernels, and being plain IEEE operations without fused
+//! multiply-adds, they give the same bits on every target.
 //!
 //! Accuracy: within 2 * 2^-24 of the exact values for |angle| up to 1e5 rad
 //! (1.39 * 2^-24 measured at every 97th float there; the tests check every

@@ -1,8 +1,9 @@
+use super::circle::cast_ray_disk;
 use super::{Segment, SupportMap};
-use crate::ray::{cast_ray_capsule, LocalRayCast};
+use crate::error::Error;
 use crate::real::{Real, V2};
+use crate::result::{hit, LocalRayCast, RayCast, RayOutcome};
 use crate::transform::check_length;
-use crate::Error;
 
 /// A segment swept by a radius (a stadium).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,7 +56,7 @@ macro_rules! const_constructors {
             /// checked when the program is compiled (an invalid one fails the
             /// build) and stored bit for bit as `new` stores it.
             pub const fn new_const(a: $vector, b: $vector, radius: $R) -> Result<Self, Error> {
-                let radius = const_try!(super::polygon_frame::$checks::check_length(radius));
+                let radius = const_try!(crate::checks::$checks::check_length(radius));
                 Ok(Self { core: const_try!(Segment::<$R>::new_const(a, b)), radius })
             }
         }
@@ -92,4 +93,45 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_capsule(V2::zero(), self.core.delta, self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }
+}
+
+/// Ray against the segment `a`-`a + delta` swept by `r` (> 0, as a
+/// [`Capsule`] has). Within the band of the two side lines,
+/// the capsule beyond an end of the core is that end's disk, and the other
+/// disk lies behind it; so the first hit is on the side the ray comes in
+/// through or, where it comes in beyond an end (or starts in the band), on
+/// that end's disk: one disk cast, not a comparison of three hits. A bare
+/// segment has its own cast (in `segment.rs`), so a firmware with capsules
+/// links no segment cast.
+fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let len2 = delta.length_squared();
+    let rel = o - a;
+    // Closest point of the core to the ray origin decides "inside".
+    let t_axis = (rel.dot(delta) / len2).max(R::ZERO).min(R::ONE);
+    if (rel - delta * t_axis).length() <= r {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let length = len2.sqrt();
+    let axis = delta * (R::ONE / length);
+    let side = axis.perp();
+    // Height over the core's line, and where along the axis the ray is when
+    // it is in the band (its origin, if it starts there).
+    let h = side.dot(rel);
+    let mut along = axis.dot(rel);
+    if h.abs() > r {
+        // Outside the band: it comes in through the nearer side line or not
+        // at all.
+        let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
+        let dn = side.dot(d);
+        if toward * dn >= R::ZERO {
+            return RayCast::closed_form(RayOutcome::Miss);
+        }
+        let t = (h.abs() - r) / dn.abs();
+        along = axis.dot(rel + d * t);
+        if along >= R::ZERO && along <= length {
+            let outcome = if t <= max { hit(o, d, t, side * toward) } else { RayOutcome::Miss };
+            return RayCast::closed_form(outcome);
+        }
+    }
+    cast_ray_disk(if along < R::ZERO { a } else { a + delta }, r, o, d, max)
 }

@@ -1,8 +1,8 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_disk, LocalRayCast};
+use crate::error::Error;
 use crate::real::{Real, V2};
+use crate::result::{hit, LocalRayCast, RayCast, RayOutcome};
 use crate::transform::{check_length, check_point};
-use crate::Error;
 
 /// A disk: a point core swept by its radius.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -63,8 +63,8 @@ macro_rules! const_constructors {
             /// [`Circle::at`] as a `const fn` (see [`new_const`](Self::new_const)).
             pub const fn at_const(center: $vector, radius: $R) -> Result<Self, Error> {
                 let center = V2 { x: center.x, y: center.y };
-                const_try!(super::polygon_frame::$checks::check_point(center));
-                Ok(Self { center, radius: const_try!(super::polygon_frame::$checks::check_length(radius)) })
+                const_try!(crate::checks::$checks::check_point(center));
+                Ok(Self { center, radius: const_try!(crate::checks::$checks::check_length(radius)) })
             }
         }
     };
@@ -100,4 +100,42 @@ impl<R: Real> SupportMap<R> for Circle<R> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_disk(V2::zero(), self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }
+}
+
+/// Ray against a disk. The root is taken in the form without cancellation,
+/// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
+/// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
+#[cfg_attr(not(target_os = "none"), inline)]
+pub(super) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let m = o - center;
+    // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
+    // too), without a square root.
+    let c = m.length_squared() - r * r;
+    if c <= R::ZERO {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let b = m.dot(d);
+    // The offset's component across the ray: m = b d + across d⊥.
+    let across = d.cross(m);
+    let p = across.abs();
+    // On hosts one branch for every way to miss, not two: which test a miss
+    // fails is not predictable (past the radius the chord is then taken as
+    // zero, a value never used). Bare metal, with no predictor to miss,
+    // leaves as soon as it knows.
+    let outside = (b >= R::ZERO) | (p > r);
+    if cfg!(target_os = "none") && outside {
+        return RayCast::closed_form(RayOutcome::Miss);
+    }
+    let chord_squared = (r - p) * (r + p);
+    let chord_squared = if cfg!(target_os = "none") { chord_squared } else { chord_squared.max(R::ZERO) };
+    let half_chord = chord_squared.sqrt();
+    let t = c / (-b + half_chord);
+    if outside | (t > max) {
+        return RayCast::closed_form(RayOutcome::Miss);
+    }
+    // The hit point from the center is m + t d = -half_chord d + across d⊥
+    // (b + t = -half_chord): of length r to rounding, with no cancellation
+    // however far the origin, and no second square root on the way.
+    let normal = (d * -half_chord + d.perp() * across) * (R::ONE / r);
+    RayCast::closed_form(hit(o, d, t, normal))
 }

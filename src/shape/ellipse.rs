@@ -1,7 +1,7 @@
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::{Real, V2};
 use crate::transform::check_length;
-use crate::Error;
 
 /// An axis-aligned ellipse centered on the local origin: a truly curved
 /// shape, so queries on it iterate to the configured epsilon.

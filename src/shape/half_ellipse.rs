@@ -1,8 +1,8 @@
 use super::ellipse::ellipse_support;
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::{Real, V2};
 use crate::transform::check_length;
-use crate::Error;
 
 /// The upper half (y >= 0) of an axis-aligned ellipse centered on the local
 /// origin, as dyn4j's `HalfEllipse`: flat side on the x axis, dome up.
@@ -40,8 +40,8 @@ macro_rules! const_constructors {
             /// checked when the program is compiled (an invalid one fails the
             /// build) and stored bit for bit as `new` stores it.
             pub const fn new_const(width: $R, height: $R) -> Result<Self, Error> {
-                let width = const_try!(super::polygon_frame::$checks::check_length(width));
-                let height = const_try!(super::polygon_frame::$checks::check_length(height));
+                let width = const_try!(crate::checks::$checks::check_length(width));
+                let height = const_try!(crate::checks::$checks::check_length(height));
                 let axes = V2 { x: width * 0.5, y: height };
                 Ok(Self { axes, centroid: V2 { x: 0.0, y: CENTROID_HEIGHT as $R * axes.y } })
             }

@@ -1,8 +1,12 @@
-use super::polygon_frame::Frame;
-use super::{polytope_support, polytope_support_near, searched, SupportMap};
-use crate::ray::{cast_ray_many_sided, cast_ray_polygon, FaceRounding, LocalRayCast};
+use super::polygon_frame::{Frame, Framing};
+use super::SupportMap;
+use crate::error::Error;
+use crate::polytope::{
+    cast_ray_many_sided, cast_ray_polygon, polytope_support, polytope_support_near, searched, FaceRounding,
+    SCAN_ONLY_MAX,
+};
 use crate::real::{Real, V2};
-use crate::Error;
+use crate::result::LocalRayCast;
 use glam::{DVec2, Vec2};
 
 /// A convex polygon of at most `N` vertices, stored inline (no allocator).
@@ -40,10 +44,10 @@ impl<R: Real, const N: usize> Polygon<R, N> {
             return Err(Error::OverCapacity);
         }
         // Each slot written once, not zeroed first: zeroing is a call to
-        // `memclr` (0.2 KB of flash) in a firmware that needs none.
+        // `memclr`, in a firmware that needs none.
         let mut vertices: [V2<R>; N] =
             core::array::from_fn(|i| points.get(i).map_or(V2::zero(), |&p| V2::from_glam(p)));
-        let frame = R::frame_polygon(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
+        let frame = R::per_type::<Framing>(vertices.get_mut(..points.len()).unwrap_or(&mut []))?;
         if Self::SCANS_EVERY_SLOT {
             let first = vertices.first().copied().unwrap_or_default();
             for slot in vertices.iter_mut().skip(points.len()) {
@@ -77,7 +81,7 @@ impl<R: Real, const N: usize> Polygon<R, N> {
     /// count to mispredict. The unused slots then copy vertex 0, which a
     /// strict comparison never prefers. Bare-metal targets scan the vertices
     /// alone: fewer products are fewer cycles there.
-    const SCANS_EVERY_SLOT: bool = cfg!(not(target_os = "none")) && N <= super::SCAN_ONLY_MAX;
+    const SCANS_EVERY_SLOT: bool = cfg!(not(target_os = "none")) && N <= SCAN_ONLY_MAX;
 
     /// What a support scan reads ([`SCANS_EVERY_SLOT`](Self::SCANS_EVERY_SLOT)).
     #[inline(always)]
@@ -137,8 +141,7 @@ macro_rules! from_array {
             /// as it stores them; but `const`, so a polygon declared as a
             /// constant is checked when the program is compiled. An invalid
             /// one fails the build, and the program carries neither the
-            /// checks (1.7 KB on a Cortex-M4F) nor a copy of the vertices in
-            /// RAM:
+            /// checks nor a copy of the vertices in RAM:
             ///
             /// ```
             /// # use gjk2d::Polygon;

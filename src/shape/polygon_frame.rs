@@ -1,6 +1,6 @@
-//! The checks every shape's inputs get (points, lengths) and a polygon's
-//! validation and framing, written once as `const fn`s and generated for f32
-//! and f64.
+//! A polygon's validation and framing, written once as `const fn`s and
+//! generated for f32 and f64. Its points get the checks every shape's
+//! inputs get (`checks.rs`).
 //!
 //! `const` because a firmware's shapes are usually fixed: a shape declared
 //! as a constant (its `*_const` constructor, or
@@ -9,13 +9,13 @@
 //! this code nor a copy of the shape in RAM. Generated
 //! per type because a `const fn` cannot do arithmetic through the [`Real`]
 //! trait. [`Polygon::new`](super::Polygon::new) runs the same functions at
-//! run time (through [`Real`]'s sealed supertrait), so a polygon built either
-//! way is bit for bit the same.
+//! run time (through [`Framing`]), so a polygon built either way is bit for
+//! bit the same.
 //!
 //! [`Real`]: crate::Real
 
-use crate::real::V2;
-use crate::Error;
+use crate::error::Error;
+use crate::real::{PerType, Real, V2};
 
 /// Where a validated polygon's vertices are stored relative to, and the
 /// bounding circle GJK scales its tolerances by.
@@ -31,9 +31,10 @@ pub struct Frame<R> {
 macro_rules! polygon_frame {
     ($module:ident, $R:ty) => {
         pub(crate) mod $module {
-            use super::{ConstChecks, Frame};
+            use super::Frame;
+            use crate::checks::$module::{check_length, check_point, max};
+            use crate::error::Error;
             use crate::real::{Real, V2};
-            use crate::Error;
 
             /// Checks the vertices and frames them in place: each finite and
             /// within range, no empty edge, convex, wound once; then put
@@ -72,65 +73,12 @@ macro_rules! polygon_frame {
                 Ok(Frame { reference, center, bounding_radius_squared: r2 })
             }
 
-            impl ConstChecks for $R {
-                #[inline(always)]
-                fn check_point(p: V2<$R>) -> Result<(), Error> {
-                    check_point(p)
-                }
-                #[inline(always)]
-                fn check_length(r: $R) -> Result<$R, Error> {
-                    check_length(r)
-                }
-                #[inline]
-                fn frame_polygon(vertices: &mut [V2<$R>]) -> Result<Frame<$R>, Error> {
-                    frame(vertices)
-                }
-            }
-
-            /// Finite, and within [`Real::MAX_COORDINATE`].
-            pub(crate) const fn check_point(p: V2<$R>) -> Result<(), Error> {
-                if !(p.x.is_finite() && p.y.is_finite()) {
-                    Err(Error::NonFinite)
-                } else if max(p.x.abs(), p.y.abs()) > <$R as Real>::MAX_COORDINATE {
-                    Err(Error::OutOfRange)
-                } else {
-                    Ok(())
-                }
-            }
-
-            /// A length (radius, extent) must be finite, positive and within
-            /// [`Real::MAX_COORDINATE`].
-            ///
-            /// Not inlined on bare metal: a firmware with every shape calls
-            /// it from a dozen constructors.
-            #[cfg_attr(target_os = "none", inline(never))]
-            pub(crate) const fn check_length(r: $R) -> Result<$R, Error> {
-                if !r.is_finite() {
-                    Err(Error::NonFinite)
-                } else if r <= 0.0 {
-                    Err(Error::NonPositive)
-                } else if r > <$R as Real>::MAX_COORDINATE {
-                    Err(Error::OutOfRange)
-                } else {
-                    Ok(r)
-                }
-            }
-
             /// Half of a `width` by `height` box, both checked as lengths:
             /// what a rectangle and an ellipse keep.
             pub(crate) const fn half_extents(width: $R, height: $R) -> Result<V2<$R>, Error> {
                 let width = const_try!(check_length(width));
                 let height = const_try!(check_length(height));
                 Ok(V2 { x: width * 0.5, y: height * 0.5 })
-            }
-
-            /// As [`Real::max`]: the same choice for equal values.
-            const fn max(a: $R, b: $R) -> $R {
-                if a > b {
-                    a
-                } else {
-                    b
-                }
             }
 
             const fn sub(a: V2<$R>, b: V2<$R>) -> V2<$R> {
@@ -356,11 +304,20 @@ macro_rules! polygon_frame {
 polygon_frame!(single, f32);
 polygon_frame!(double, f64);
 
-/// The per-type `const fn`s above, as generic code reaches them (through
-/// [`Real`](crate::Real)'s sealed supertrait): one definition of a valid
-/// point and of a polygon's framing, at compile time and at run time.
-pub trait ConstChecks: Sized {
-    fn check_point(p: V2<Self>) -> Result<(), Error>;
-    fn check_length(r: Self) -> Result<Self, Error>;
-    fn frame_polygon(vertices: &mut [V2<Self>]) -> Result<Frame<Self>, Error>;
+/// A polygon's framing, as generic code ([`Polygon::new`](super::Polygon::new))
+/// reaches the per-type `const fn`s above: one definition of it, at compile
+/// time and at run time.
+pub(crate) enum Framing {}
+
+impl PerType for Framing {
+    type Input<'a, R: Real> = &'a mut [V2<R>];
+    type Output<R: Real> = Result<Frame<R>, Error>;
+    #[inline]
+    fn f32(vertices: &mut [V2<f32>]) -> Result<Frame<f32>, Error> {
+        single::frame(vertices)
+    }
+    #[inline]
+    fn f64(vertices: &mut [V2<f64>]) -> Result<Frame<f64>, Error> {
+        double::frame(vertices)
+    }
 }

@@ -1,8 +1,9 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_polygon, FaceRounding, LocalRayCast};
+use crate::error::Error;
+use crate::polytope::{cast_ray_polygon, FaceRounding};
 use crate::real::{Real, V2};
+use crate::result::LocalRayCast;
 use crate::transform::check_length;
-use crate::Error;
 
 /// An axis-aligned rectangle centered on the local origin (rotate it with
 /// its transform). Its support is two sign tests, not a vertex scan.

@@ -1,7 +1,7 @@
 use super::SupportMap;
+use crate::error::Error;
 use crate::real::Real;
 use crate::transform::check_length;
-use crate::Error;
 
 /// Any shape swept by an extra radius (a rounded polygon, a rounded
 /// rectangle). The radius is handled in closed form like a circle's, so a
@@ -36,7 +36,7 @@ macro_rules! const_constructors {
             /// checked when the program is compiled (an invalid one fails the
             /// build) and stored bit for bit as `new` stores it.
             pub const fn new_const(inner: S, radius: $R) -> Result<Self, Error> {
-                match super::polygon_frame::$checks::check_length(radius) {
+                match crate::checks::$checks::check_length(radius) {
                     Ok(radius) => Ok(Self { inner, radius }),
                     Err(e) => {
                         // Dropped for nothing, as a `const fn` cannot run a

@@ -1,8 +1,8 @@
 use super::SupportMap;
-use crate::ray::{cast_ray_segment, LocalRayCast};
+use crate::error::Error;
 use crate::real::{Real, V2};
+use crate::result::{hit, LocalRayCast, RayCast, RayOutcome};
 use crate::transform::check_point;
-use crate::Error;
 
 /// A line segment: a two-vertex core with no radius.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -52,8 +52,8 @@ macro_rules! const_constructors {
             pub const fn new_const(a: $vector, b: $vector) -> Result<Self, Error> {
                 let start = V2 { x: a.x, y: a.y };
                 let end = V2 { x: b.x, y: b.y };
-                const_try!(super::polygon_frame::$checks::check_point(start));
-                const_try!(super::polygon_frame::$checks::check_point(end));
+                const_try!(crate::checks::$checks::check_point(start));
+                const_try!(crate::checks::$checks::check_point(end));
                 let delta = V2 { x: end.x - start.x, y: end.y - start.y };
                 if delta.x == 0.0 && delta.y == 0.0 {
                     return Err(Error::ZeroLength);
@@ -92,4 +92,52 @@ impl<R: Real> SupportMap<R> for Segment<R> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_segment(V2::zero(), self.delta, V2::from_glam(o), V2::from_glam(d), max))
     }
+}
+
+/// Ray against the bare segment `a`-`a + delta`. A segment has no inside, so
+/// a ray nearly along its line is ill-conditioned: an end point the ray
+/// passes within rounding distance of counts as hit, as a user expects of a
+/// ray aimed along a wall.
+fn cast_ray_segment<R: Real>(a: V2<R>, delta: V2<R>, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+    let rel = a - o;
+    let slack = R::from_u32(4) * R::EPSILON;
+    // An origin on the segment (to rounding) is on the shape.
+    let along = -rel.dot(delta);
+    let scale = rel.length() + delta.length();
+    if along >= R::ZERO && along <= delta.length_squared() && delta.cross(rel).abs() <= slack * scale * delta.length() {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let denominator = d.cross(delta);
+    let mut best: Option<(R, V2<R>)> = None;
+    if denominator != R::ZERO {
+        let t = rel.cross(delta) / denominator;
+        let s = rel.cross(d) / denominator;
+        if s >= R::ZERO && s <= R::ONE && t >= R::ZERO && t <= max {
+            if t == R::ZERO {
+                return RayCast::closed_form(RayOutcome::Inside);
+            }
+            // The face normal on the side the ray comes from.
+            let n = delta.perp();
+            let n = if n.dot(d) > R::ZERO { -n } else { n };
+            best = Some((t, n.try_normalize().unwrap_or(-d)));
+        }
+    }
+    for end in [rel, rel + delta] {
+        let t = end.dot(d);
+        let off = d.cross(end).abs();
+        if t >= R::ZERO
+            && t <= max
+            && off <= slack * (end.length() + delta.length())
+            && best.is_none_or(|(bt, _)| t < bt)
+        {
+            if t == R::ZERO {
+                return RayCast::closed_form(RayOutcome::Inside);
+            }
+            best = Some((t, -d));
+        }
+    }
+    RayCast::closed_form(match best {
+        Some((t, normal)) => hit(o, d, t, normal),
+        None => RayOutcome::Miss,
+    })
 }

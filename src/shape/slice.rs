@@ -1,6 +1,6 @@
 use super::SupportMap;
-use crate::real::{Real, V2};
-use crate::Error;
+use crate::error::Error;
+use crate::real::{PerType, Real, V2};
 
 /// A circular sector (a pizza slice) with its apex on the local origin,
 /// symmetric about the +x axis, as dyn4j's `Slice`.
@@ -15,7 +15,7 @@ pub struct Slice<R: Real> {
 impl<R: Real> Slice<R> {
     /// A slice of `radius` (> 0) spanning `theta` radians, 0 < theta <= pi.
     pub fn new(radius: R, theta: R) -> Result<Self, Error> {
-        R::slice(radius, theta)
+        R::per_type::<NewSlice>((radius, theta))
     }
     pub fn slice_radius(&self) -> R {
         self.radius
@@ -64,13 +64,19 @@ impl<R: Real> SupportMap<R> for Slice<R> {
     }
 }
 
-/// How generic code reaches the per-type `const` constructor (through
-/// [`Real`]'s sealed supertrait): one definition of a slice, at compile time
-/// and at run time.
-pub trait SliceConst: Sized {
-    fn slice(radius: Self, theta: Self) -> Result<Slice<Self>, Error>
-    where
-        Self: Real;
+/// How generic code ([`Slice::new`]) reaches the per-type `const`
+/// constructor: one definition of a slice, at compile time and at run time.
+enum NewSlice {}
+
+impl PerType for NewSlice {
+    type Input<'a, R: Real> = (R, R);
+    type Output<R: Real> = Result<Slice<R>, Error>;
+    fn f32((radius, theta): (f32, f32)) -> Result<Slice<f32>, Error> {
+        Slice::<f32>::new_const(radius, theta)
+    }
+    fn f64((radius, theta): (f64, f64)) -> Result<Slice<f64>, Error> {
+        Slice::<f64>::new_const(radius, theta)
+    }
 }
 
 /// The `const` constructor, for each scalar type (a `const fn` cannot be
@@ -83,7 +89,7 @@ macro_rules! const_constructors {
             /// is checked when the program is compiled (an invalid one fails
             /// the build) and stored bit for bit as `new` stores it.
             pub const fn new_const(radius: $R, theta: $R) -> Result<Self, Error> {
-                let radius = const_try!(super::polygon_frame::$checks::check_length(radius));
+                let radius = const_try!(crate::checks::$checks::check_length(radius));
                 if !theta.is_finite() {
                     return Err(Error::NonFinite);
                 }
@@ -109,12 +115,6 @@ macro_rules! const_constructors {
                     ends: [V2 { x: radius * c, y: radius * s }, V2 { x: radius * c, y: -radius * s }],
                     centroid: V2 { x: cx, y: 0.0 },
                 })
-            }
-        }
-
-        impl SliceConst for $R {
-            fn slice(radius: $R, theta: $R) -> Result<Slice<$R>, Error> {
-                Slice::<$R>::new_const(radius, theta)
             }
         }
     };

@@ -1,7 +1,7 @@
 use super::{Polygon, SupportMap};
-use crate::ray::LocalRayCast;
+use crate::error::Error;
 use crate::real::Real;
-use crate::Error;
+use crate::result::LocalRayCast;
 
 /// A triangle: a three-vertex [`Polygon`] with its own constructor.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,0 +1,367 @@
+//! Ray casts at convex polygons (counter-clockwise vertices) by clipping
+//! the ray with each edge's half-plane: every edge, every edge at once in
+//! lanes for small polygons, or only the edges a binary search finds where
+//! the ray's line crosses the boundary.
+
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use super::SMALL_POLYGON_MAX;
+use super::{at, first_reached, polytope_support};
+use crate::real::{Real, V2};
+use crate::result::{gap_hit, RayCast, RayOutcome};
+
+/// [`cast_ray_polygon`] for a polygon of at most [`SMALL_POLYGON_MAX`]
+/// vertices, every edge clipped at once: the same per-edge numerators,
+/// denominators and quotients, then the latest entry and the earliest exit
+/// taken by selects over the lanes. On hosts, where the clip's branches (is
+/// this edge entered, left, the new latest?) change from ray to ray and a
+/// predictor misses them.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) fn cast_ray_small_polygon<R: Real>(
+    vertices: &[V2<R>],
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+    rounding: FaceRounding<R>,
+) -> RayCast<R> {
+    const M: usize = SMALL_POLYGON_MAX;
+    let n = vertices.len().min(M);
+    let first = vertices.first().copied().unwrap_or_default();
+    // Unused slots copy the first vertex: their edges are empty, with a zero
+    // normal, and clip nothing.
+    let v: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).copied().unwrap_or(first));
+    let next: [V2<R>; M] = core::array::from_fn(|i| if i + 1 < n { v[(i + 1) % M] } else { first });
+    let mut lower = [-R::INFINITY; M];
+    let mut upper = [max; M];
+    // The same faces moved inwards by the rounding, as the clip has them.
+    let mut inner_lower = [R::ZERO; M];
+    let mut inner_upper = [max; M];
+    let mut outer_exit = [max; M];
+    let (mut entered, mut parallel_outside, mut inner_parallel_outside) = (false, false, false);
+    for i in 0..M {
+        let normal = (next[i] - v[i]).perp_cw();
+        // Positive when the origin is on the inner side of this edge.
+        let numerator = normal.dot(v[i] - o);
+        let denominator = normal.dot(d);
+        let t = numerator / denominator;
+        // Entered beyond the origin (t > 0), or left before `max`.
+        let entering = (denominator < R::ZERO) & (numerator < R::ZERO);
+        let leaving = denominator > R::ZERO;
+        entered |= entering;
+        lower[i] = core::hint::select_unpredictable(entering, t, -R::INFINITY);
+        upper[i] = core::hint::select_unpredictable(leaving, t, max);
+        parallel_outside |= (denominator == R::ZERO) & (numerator < R::ZERO);
+        let (numerator_seen, denominator_seen) = (numerator, denominator);
+        let (numerator, denominator) = rounding.moved_in(normal, numerator, denominator);
+        let t = numerator / denominator;
+        let entering = (denominator < R::ZERO) & (numerator < R::ZERO);
+        inner_lower[i] = core::hint::select_unpredictable(entering, t, R::ZERO);
+        inner_upper[i] = core::hint::select_unpredictable(denominator > R::ZERO, t, max);
+        inner_parallel_outside |= (denominator == R::ZERO) & (numerator < R::ZERO);
+        let (numerator, denominator) = rounding.moved_out(normal, numerator_seen, denominator_seen);
+        outer_exit[i] = core::hint::select_unpredictable(denominator > R::ZERO, numerator / denominator, max);
+    }
+    let mut entry = 0;
+    let mut exit = upper[0];
+    let mut inner = Span { lower: inner_lower[0], upper: inner_upper[0] };
+    for i in 1..M {
+        entry = core::hint::select_unpredictable(lower[i] > lower[entry], i, entry);
+        exit = exit.min(upper[i]);
+        inner = Span { lower: inner.lower.max(inner_lower[i]), upper: inner.upper.min(inner_upper[i]) };
+        outer_exit[0] = outer_exit[0].min(outer_exit[i]);
+    }
+    let t = if entered { lower[entry] } else { R::ZERO };
+    // A subnormal denominator (a ray parallel to a face to rounding) sends t
+    // to infinity: no entry, a miss.
+    if parallel_outside | (exit < t) | !t.is_finite() {
+        return RayCast::closed_form(RayOutcome::Miss);
+    }
+    if !entered {
+        return RayCast::closed_form(RayOutcome::Inside);
+    }
+    let normal = (next[entry] - v[entry]).perp_cw().try_normalize().unwrap_or(-d);
+    let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, outer_exit[0]);
+    RayCast::closed_form(gap_hit(o, d, t, normal, gap))
+}
+
+/// Clips the ray against each edge's half-plane (counter-clockwise vertices):
+/// the hit is the last entry, its normal the entered face's.
+pub(crate) fn cast_ray_polygon<R: Real>(
+    vertices: &[V2<R>],
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+    rounding: FaceRounding<R>,
+) -> RayCast<R> {
+    let mut clip = Clip::new(o, d, max, rounding);
+    for (&a, &b) in vertices.iter().zip(vertices.iter().skip(1).chain(vertices.first())) {
+        if clip.misses(a, b) {
+            return RayCast::closed_form(RayOutcome::Miss);
+        }
+    }
+    clip.outcome()
+}
+
+/// The ray's line meets a convex polygon's boundary on two edges: one on
+/// the chain that faces the ray (counter-clockwise from the vertex farthest
+/// to the ray's left to the one farthest to its right), one on the chain
+/// that faces away. Along each chain the vertices' side of the line changes
+/// monotonically, so a binary search finds where it changes, in O(log n).
+/// Only the edges there are clipped against (the far crossing only when the
+/// origin is past the near one): the scan's clip, with the scan's result
+/// wherever the decisive edges are among them.
+///
+/// Rounding can misplace the change among vertices within rounding of the
+/// line (`slack`, from `reach`, a bound on the vertices' distance from the
+/// ray's origin): every edge that touches them is clipped. A line within
+/// rounding of a tangent has no reliable crossing (edges along it give
+/// none); `None` then leaves the ray to the scan.
+pub(crate) fn cast_ray_many_sided<R: Real, const N: usize>(
+    v: &[V2<R>],
+    o: V2<R>,
+    d: V2<R>,
+    max: R,
+    reach: R,
+    rounding: FaceRounding<R>,
+) -> Option<RayCast<R>> {
+    let n = v.len();
+    let left = d.perp();
+    let side = |i: usize| left.dot(at(v, i) - o);
+    // `side` rounds by at most 3 eps |v - o|_1 <= 3 sqrt(2) eps reach.
+    let slack = R::from_u32(8) * R::EPSILON * reach;
+    let leftmost = polytope_support::<R, N>(v, left).0;
+    let rightmost = polytope_support::<R, N>(v, -left).0;
+    let (farthest_left, farthest_right) = (side(leftmost), side(rightmost));
+    // The line passes the polygon by.
+    if farthest_left < -slack || farthest_right > slack {
+        return Some(RayCast::closed_form(RayOutcome::Miss));
+    }
+    // Within rounding of a tangent: the scan decides.
+    if farthest_left <= slack || farthest_right >= -slack {
+        return None;
+    }
+    let is_left = |i: usize| side(i) > slack;
+    let is_right = |i: usize| side(i) < -slack;
+    let entry = first_vertex_reaching(n, leftmost, rightmost, |i| side(i) <= R::ZERO)?;
+    let mut clip = Clip::new(o, d, max, rounding);
+    if clip.misses_around(v, entry, is_left, is_right) {
+        return Some(RayCast::closed_form(RayOutcome::Miss));
+    }
+    // Entered ahead of the origin: the line leaves the polygon farther on,
+    // so the hit stands without the search for where.
+    if clip.entered.is_none() {
+        let exit = first_vertex_reaching(n, rightmost, leftmost, |i| side(i) >= R::ZERO)?;
+        if clip.misses_around(v, exit, is_right, is_left) {
+            return Some(RayCast::closed_form(RayOutcome::Miss));
+        }
+    }
+    Some(clip.outcome())
+}
+
+/// On the chain counter-clockwise from vertex `from` to vertex `to` (where
+/// `reached` holds), the first vertex where it holds, if the chain is not
+/// empty.
+fn first_vertex_reaching(n: usize, from: usize, to: usize, reached: impl Fn(usize) -> bool) -> Option<usize> {
+    let length = wrap(to + n - from, n);
+    if length == 0 {
+        return None;
+    }
+    // The first step in 1..=length with `reached`, which holds at `length`.
+    let step = first_reached(1, length, |step| reached(wrap(from + step, n)));
+    Some(wrap(from + step, n))
+}
+
+/// `i mod n` for `i < 2 n`, without a division.
+#[inline(always)]
+fn wrap(i: usize, n: usize) -> usize {
+    if i >= n {
+        i - n
+    } else {
+        i
+    }
+}
+
+/// How far rounding may have moved a polygon's faces across a ray: at the
+/// scale of the ray's origin, the shape's reference point and its size
+/// (`across`), and by 8 eps per unit along the ray, as the hit's error bound
+/// models it ([`Gjk::raycast`](crate::Gjk::raycast)); and the shape's size
+/// (at least its bounding radius).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FaceRounding<R> {
+    across: R,
+    size: R,
+}
+
+impl<R: Real> FaceRounding<R> {
+    /// For a ray from `o` (relative to the shape's `reference` point) at a
+    /// shape of bounding radius at most `size`.
+    #[inline(always)]
+    pub fn new(o: V2<R>, reference: V2<R>, size: R) -> Self {
+        let sum = |v: V2<R>| v.x.abs() + v.y.abs();
+        Self { across: R::from_u32(8) * R::EPSILON * (sum(o) + sum(reference) + size), size }
+    }
+}
+
+impl<R: Real> FaceRounding<R> {
+    /// A face's clip (`numerator`, `denominator`, for its outward `normal`)
+    /// with the face moved inwards by the rounding: by `across` and by 8 eps
+    /// per unit of distance along the ray, in units of `|normal|_1` (at least
+    /// its length, and no square root).
+    #[inline(always)]
+    fn moved_in(&self, normal: V2<R>, numerator: R, denominator: R) -> (R, R) {
+        self.moved(normal, numerator, denominator, R::ONE)
+    }
+
+    /// The same, moved outwards: where the ray may leave at the latest.
+    #[inline(always)]
+    fn moved_out(&self, normal: V2<R>, numerator: R, denominator: R) -> (R, R) {
+        self.moved(normal, numerator, denominator, -R::ONE)
+    }
+
+    #[inline(always)]
+    fn moved(&self, normal: V2<R>, numerator: R, denominator: R, inwards: R) -> (R, R) {
+        let length = (normal.x.abs() + normal.y.abs()) * inwards;
+        (numerator - self.across * length, denominator + R::from_u32(8) * R::EPSILON * length)
+    }
+
+    /// The gap to report across the face of a hit at `t` whose unit normal
+    /// meets the ray at `n_dot_d`: how much later than `t` an exact ray may
+    /// enter. Where the faces moved in are entered, no later than they are;
+    /// where they are not (the exact ray may miss, or cross a sliver), no
+    /// later than the faces moved out are left (`outer_exit`), and never
+    /// more than twice the size. Times the incidence, as the error bound
+    /// divides a gap by it.
+    fn gap(&self, t: R, n_dot_d: R, inner: Span<R>, inner_empty: bool, outer_exit: R) -> R {
+        let missed = inner_empty || inner.upper < inner.lower || !inner.lower.is_finite();
+        let latest = if missed { outer_exit.min(t + R::TWO * self.size) } else { inner.lower };
+        (latest - t).max(R::ZERO) * n_dot_d.abs()
+    }
+}
+
+/// Where a line enters (`lower`) and leaves (`upper`) an intersection of
+/// half-planes, clipped one at a time.
+#[derive(Clone, Copy)]
+struct Span<R> {
+    lower: R,
+    upper: R,
+}
+
+impl<R: Real> Span<R> {
+    /// Clips by the half-plane where `numerator - t denominator >= 0`:
+    /// whether the span is now empty, and whether this raised its entry.
+    #[inline(always)]
+    fn clip(&mut self, numerator: R, denominator: R) -> (bool, bool) {
+        if denominator == R::ZERO {
+            return (numerator < R::ZERO, false);
+        }
+        if denominator < R::ZERO {
+            // Entering. t = numerator / denominator > lower, multiplied out
+            // (denominator < 0 flips it): one division per update, not per
+            // edge. A subnormal denominator (a ray parallel to the face to
+            // rounding) sends t to infinity: no entry, empty.
+            if numerator < self.lower * denominator {
+                self.lower = numerator / denominator;
+                return (self.upper < self.lower || !self.lower.is_finite(), true);
+            }
+        } else if numerator < self.upper * denominator {
+            // Leaving: t < upper.
+            self.upper = numerator / denominator;
+            return (self.upper < self.lower, false);
+        }
+        (false, false)
+    }
+}
+
+/// The ray clipped by edge half-planes, one at a time (Cyrus-Beck): where
+/// it enters and leaves the intersection of those seen so far. Beside it,
+/// the ray clipped by the same faces moved inwards by what rounding may
+/// have moved them ([`FaceRounding`]): where a ray passes a vertex within
+/// rounding along a grazing face, the exact ray may enter through that face
+/// far later than the hit, or miss, and the hit's error bound must say so.
+struct Clip<R: Real> {
+    o: V2<R>,
+    d: V2<R>,
+    span: Span<R>,
+    /// The normal of the edge the ray last entered through.
+    entered: Option<V2<R>>,
+    rounding: FaceRounding<R>,
+    inner: Span<R>,
+    inner_empty: bool,
+    /// Where the ray leaves the faces moved outwards, at the latest.
+    outer_exit: R,
+}
+
+impl<R: Real> Clip<R> {
+    #[inline(always)]
+    fn new(o: V2<R>, d: V2<R>, max: R, rounding: FaceRounding<R>) -> Self {
+        let span = Span { lower: R::ZERO, upper: max };
+        Self { o, d, span, entered: None, rounding, inner: span, inner_empty: false, outer_exit: max }
+    }
+
+    /// Clips by the inner side of edge `a`-`b`; true when the ray
+    /// certainly misses.
+    #[inline(always)]
+    fn misses(&mut self, a: V2<R>, b: V2<R>) -> bool {
+        let normal = (b - a).perp_cw();
+        // Positive when the origin is on the inner side of this edge.
+        let numerator = normal.dot(a - self.o);
+        let denominator = normal.dot(self.d);
+        let (inner_numerator, inner_denominator) = self.rounding.moved_in(normal, numerator, denominator);
+        self.inner_empty |= self.inner.clip(inner_numerator, inner_denominator).0;
+        let (outer_numerator, outer_denominator) = self.rounding.moved_out(normal, numerator, denominator);
+        if outer_denominator > R::ZERO && outer_numerator < self.outer_exit * outer_denominator {
+            self.outer_exit = outer_numerator / outer_denominator;
+        }
+        let (empty, raised) = self.span.clip(numerator, denominator);
+        if raised {
+            self.entered = Some(normal);
+        }
+        empty
+    }
+
+    /// Clips by the edges around `vertex`, where a chain crosses the ray's
+    /// line: from the last vertex before it clearly on the side the chain
+    /// comes from to the first clearly on the side it goes to. True when the
+    /// ray certainly misses. Each walk is bounded by the vertex count.
+    fn misses_around(
+        &mut self,
+        v: &[V2<R>],
+        vertex: usize,
+        came_from: impl Fn(usize) -> bool,
+        goes_to: impl Fn(usize) -> bool,
+    ) -> bool {
+        let n = v.len();
+        let mut first = wrap(vertex + n - 1, n);
+        let mut steps = 0;
+        while !came_from(first) && steps < n {
+            first = wrap(first + n - 1, n);
+            steps += 1;
+        }
+        let mut last = vertex;
+        while !goes_to(last) && steps < n {
+            last = wrap(last + 1, n);
+            steps += 1;
+        }
+        let mut k = first;
+        while k != last && steps < 2 * n {
+            let next = wrap(k + 1, n);
+            if self.misses(at(v, k), at(v, next)) {
+                return true;
+            }
+            k = next;
+            steps += 1;
+        }
+        false
+    }
+
+    fn outcome(self) -> RayCast<R> {
+        RayCast::closed_form(match self.entered {
+            None => RayOutcome::Inside,
+            Some(normal) => {
+                let normal = normal.try_normalize().unwrap_or(-self.d);
+                let t = self.span.lower;
+                let gap = self.rounding.gap(t, normal.dot(self.d), self.inner, self.inner_empty, self.outer_exit);
+                gap_hit(self.o, self.d, t, normal, gap)
+            }
+        })
+    }
+}
