@@ -277,8 +277,8 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
     if Pair::<R, S, S>::shapes_known() {
         if let Some(polygon) = shape.small_polygon() {
             let reference = V2::from_glam(shape.reference_point());
-            let rounding = crate::ray::FaceRounding::new(origin, reference, shape.bounding_radius());
-            return Some(crate::ray::cast_ray_small_polygon(polygon.vertices, origin, direction, max, rounding));
+            let rounding = crate::polytope::FaceRounding::new(origin, reference, shape.bounding_radius());
+            return Some(crate::polytope::cast_ray_small_polygon(polygon.vertices, origin, direction, max, rounding));
         }
     }
     shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)

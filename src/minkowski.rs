@@ -272,6 +272,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// A point of B's frame (relative to its reference point) in the pair
     /// frame.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn b_to_pair(&self, p: V2<R>) -> V2<R> {
         self.rotate(p) + self.offset

@@ -11,11 +11,6 @@ use crate::shape::SupportMap;
 use crate::simplex::{Closest, Simplex, Vertex, Witness};
 use crate::transform::check_point;
 
-/// The polygon clip of every edge at once, which the query takes for small
-/// polygons whose types are known when the program is compiled.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-pub(crate) use crate::polytope::{cast_ray_small_polygon, FaceRounding};
-
 /// A half-line: an origin and a unit direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray<R: Real> {

@@ -51,7 +51,9 @@ pub use triangle::Triangle;
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 pub use crate::polytope::SMALL_POLYGON_MAX;
-use crate::real::{Real, V2};
+use crate::real::Real;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::real::V2;
 use crate::result::LocalRayCast;
 
 /// The feature id of a support point that is not one of finitely many
