@@ -43,9 +43,9 @@ pub trait PenetrationSolver<R: Real> {
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
-/// the stack (default 32: 384 bytes in f32, 768 in f64). A full polytope
-/// merges away the corner that matters least (one that no longer can,
-/// where there is one); when none can go the answer says
+/// the stack (default 32; the firmware guide tabulates what each `N`
+/// costs). A full polytope merges away the corner that matters least (one
+/// that no longer can, where there is one); when none can go the answer says
 /// `Status::CapacityLimit`.
 ///
 /// `N` is at least 3 (a triangle around the origin), checked when the
@@ -84,9 +84,9 @@ impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
     }
 }
 
-/// A polytope vertex and the distance of the edge that starts at it, in 12
-/// bytes (f32): 32 of them are the largest thing on a microcontroller's stack
-/// during a penetration query.
+/// A polytope vertex and the distance of the edge that starts at it, kept
+/// small: the polytope's corners are the largest thing on a
+/// microcontroller's stack during a penetration query.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Corner<R> {
     w: V2<R>,

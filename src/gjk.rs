@@ -72,8 +72,8 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
     /// Distance between the cores (radii not included): [`distance_loop`],
     /// inlined into each query where the scalar asks for flat frames
     /// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where that keeps the
-    /// distance query's stack smaller). Elsewhere one shared copy, which
-    /// keeps the f32 flash budgets.
+    /// distance query's stack smaller). Elsewhere one shared copy: one loop
+    /// serves distance and penetration.
     #[inline(always)]
     pub(crate) fn core_distance<'s, P: Payload<R>>(
         &self,

@@ -20,9 +20,8 @@ mod sealed {
         /// f64 takes two of them: fewer frames are less stack. In f32 the
         /// shared and nested functions are the smaller code (one copy of the
         /// loop for distance and penetration, one of the segment solve
-        /// instead of four), which the flash budgets need, and its stacks
-        /// are within budget either way. Hosts and wasm keep their own
-        /// inlining.
+        /// instead of four), and its frames are small already. Hosts and
+        /// wasm keep their own inlining.
         const FLAT_GJK: bool;
 
         /// Whether [`first_max_dot`](Self::first_max_dot) scans in SIMD,

@@ -177,46 +177,40 @@ ray_suite!(small_polygon_rays_match_the_oracle_f64, f64, DVec2);
 /// polygon, its placement's angle, the ray, and the oracle's exact distance.
 #[test]
 fn grazing_past_a_vertex() {
-    let f64_cases = [(
+    // Each case: the polygon, its placement's angle, the ray, the exact
+    // distance; cast through the concrete type and through `dyn`.
+    macro_rules! check {
+        ($r:ty, $vec:ident, $vertices:expr, $angle:expr, $origin:expr, $direction:expr, $exact:expr) => {{
+            let polygon = Polygon::<$r, 8>::new(&$vertices.map(|p: [$r; 2]| $vec::new(p[0], p[1]))).unwrap();
+            let placed = Transform::<$r>::new($vec::ZERO, $angle).unwrap();
+            let ray = Ray::new($vec::new($origin[0], $origin[1]), $vec::new($direction[0], $direction[1])).unwrap();
+            let dynamic: &dyn SupportMap<$r> = &polygon;
+            for cast in [
+                Gjk::<$r>::new().raycast(&ray, 0.0, &polygon, &placed),
+                Gjk::<$r>::new().raycast(&ray, 0.0, dynamic, &placed),
+            ] {
+                let RayOutcome::Hit(hit) = cast.outcome else { panic!("a hit: {cast:?}") };
+                let error = (hit.distance as f64 - $exact).abs();
+                assert!(error <= hit.error_bound as f64, "error {error:e}, error_bound {:e}", hit.error_bound);
+            }
+        }};
+    }
+    check!(
+        f64,
+        DVec2,
         [[-1.5, 0.0], [1.5, -0.375], [-1.5, 1.0]],
         0.616226895087313f64.atan2(-0.7875686724159677),
         [-3.981151045338925, 7.082804681608274],
         [0.45921153808182985, -0.8883269461704514],
-        6.600189392095721,
-    )];
-    for (vertices, angle, origin, direction, exact) in f64_cases {
-        let polygon = Polygon::<f64, 8>::new(&vertices.map(|p: [f64; 2]| DVec2::new(p[0], p[1]))).unwrap();
-        let placed = Transform::<f64>::new(DVec2::ZERO, angle).unwrap();
-        let ray = Ray::new(DVec2::new(origin[0], origin[1]), DVec2::new(direction[0], direction[1])).unwrap();
-        let dynamic: &dyn SupportMap<f64> = &polygon;
-        for cast in [
-            Gjk::<f64>::new().raycast(&ray, 0.0, &polygon, &placed),
-            Gjk::<f64>::new().raycast(&ray, 0.0, dynamic, &placed),
-        ] {
-            let RayOutcome::Hit(hit) = cast.outcome else { panic!("a hit: {cast:?}") };
-            let error = (hit.distance - exact).abs();
-            assert!(error <= hit.error_bound, "error {error:e}, error_bound {:e}", hit.error_bound);
-        }
-    }
-    let f32_cases = [(
+        6.600189392095721
+    );
+    check!(
+        f32,
+        Vec2,
         [[-1.625, -1.25], [-0.25, -0.625], [0.0, 0.0]],
         0.9824928f32.atan2(-0.1863004),
         [3.271_362_8_f32, -3.832_608],
         [-0.576_182_1_f32, 0.817_321_4],
-        3.0208476869397503,
-    )];
-    for (vertices, angle, origin, direction, exact) in f32_cases {
-        let polygon = Polygon::<f32, 8>::new(&vertices.map(|p: [f32; 2]| Vec2::new(p[0], p[1]))).unwrap();
-        let placed = Transform::<f32>::new(Vec2::ZERO, angle).unwrap();
-        let ray = Ray::new(Vec2::new(origin[0], origin[1]), Vec2::new(direction[0], direction[1])).unwrap();
-        let dynamic: &dyn SupportMap<f32> = &polygon;
-        for cast in [
-            Gjk::<f32>::new().raycast(&ray, 0.0, &polygon, &placed),
-            Gjk::<f32>::new().raycast(&ray, 0.0, dynamic, &placed),
-        ] {
-            let RayOutcome::Hit(hit) = cast.outcome else { panic!("a hit: {cast:?}") };
-            let error = (hit.distance as f64 - exact).abs();
-            assert!(error <= hit.error_bound as f64, "error {error:e}, error_bound {:e}", hit.error_bound);
-        }
-    }
+        3.0208476869397503
+    );
 }
