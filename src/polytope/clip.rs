@@ -50,24 +50,25 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
         lower[i] = core::hint::select_unpredictable(entering, t, -R::INFINITY);
         upper[i] = core::hint::select_unpredictable(leaving, t, max);
         parallel_outside |= (denominator == R::ZERO) & (numerator < R::ZERO);
-        let (numerator_seen, denominator_seen) = (numerator, denominator);
-        let (numerator, denominator) = rounding.moved_in(normal, numerator, denominator);
-        let t = numerator / denominator;
-        let entering = (denominator < R::ZERO) & (numerator < R::ZERO);
-        inner_lower[i] = core::hint::select_unpredictable(entering, t, R::ZERO);
-        inner_upper[i] = core::hint::select_unpredictable(denominator > R::ZERO, t, max);
-        inner_parallel_outside |= (denominator == R::ZERO) & (numerator < R::ZERO);
-        let (numerator, denominator) = rounding.moved_out(normal, numerator_seen, denominator_seen);
-        outer_exit[i] = core::hint::select_unpredictable(denominator > R::ZERO, numerator / denominator, max);
+        let (inner_numerator, inner_denominator) = rounding.moved_in(normal, numerator, denominator);
+        let inner_t = inner_numerator / inner_denominator;
+        let inner_entering = (inner_denominator < R::ZERO) & (inner_numerator < R::ZERO);
+        inner_lower[i] = core::hint::select_unpredictable(inner_entering, inner_t, R::ZERO);
+        inner_upper[i] = core::hint::select_unpredictable(inner_denominator > R::ZERO, inner_t, max);
+        inner_parallel_outside |= (inner_denominator == R::ZERO) & (inner_numerator < R::ZERO);
+        let (outer_numerator, outer_denominator) = rounding.moved_out(normal, numerator, denominator);
+        let outer_t = outer_numerator / outer_denominator;
+        outer_exit[i] = core::hint::select_unpredictable(outer_denominator > R::ZERO, outer_t, max);
     }
     let mut entry = 0;
     let mut exit = upper[0];
     let mut inner = Span { lower: inner_lower[0], upper: inner_upper[0] };
+    let mut latest_exit = outer_exit[0];
     for i in 1..M {
         entry = core::hint::select_unpredictable(lower[i] > lower[entry], i, entry);
         exit = exit.min(upper[i]);
         inner = Span { lower: inner.lower.max(inner_lower[i]), upper: inner.upper.min(inner_upper[i]) };
-        outer_exit[0] = outer_exit[0].min(outer_exit[i]);
+        latest_exit = latest_exit.min(outer_exit[i]);
     }
     let t = if entered { lower[entry] } else { R::ZERO };
     // A subnormal denominator (a ray parallel to a face to rounding) sends t
@@ -79,7 +80,7 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
         return RayCast::closed_form(RayOutcome::Inside);
     }
     let normal = (next[entry] - v[entry]).perp_cw().try_normalize().unwrap_or(-d);
-    let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, outer_exit[0]);
+    let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, latest_exit);
     RayCast::closed_form(gap_hit(o, d, t, normal, gap))
 }
 
