@@ -107,6 +107,9 @@ impl<R: Real, P> Gjk<R, P> {
         let pair = Pair::new(a, ta, b, tb);
         if pair.point_cores() {
             if let Some(ref core) = PointCores::new(&pair) {
+                if core.certainly_within(pair.radius_a() + pair.radius_b()) {
+                    return None;
+                }
                 return separation(&pair, &core.separation());
             }
         }
@@ -421,6 +424,18 @@ impl<R: Real> PointCores<R> {
         }
         let lower_bound = R::ZERO.max(w.w.dot(w.w) / vv.sqrt());
         Some(Self { simplex: Simplex::new(Vertex::from_minkowski(&w)), v: w.w, lower_bound })
+    }
+
+    /// Whether the cores are certainly within `radius` (the radii's sum)
+    /// of each other, decided on the squared offset with a margin of 16 eps:
+    /// where it says so, the distance query's answer is `None` as well. Its
+    /// branch is as unpredictable as the shapes' overlap, but no longer
+    /// waits for a square root to learn which way it goes.
+    #[inline(always)]
+    fn certainly_within(&self, radius: R) -> bool {
+        let vv = self.v.length_squared();
+        // Normal numbers only: then the square and the limit round relatively.
+        vv >= R::MIN_POSITIVE && vv < radius * radius * (R::ONE - R::from_u32(16) * R::EPSILON)
     }
 
     fn separation(&self) -> CoreSeparation<'_, R, Witness<R>> {
