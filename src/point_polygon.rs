@@ -6,7 +6,7 @@
 //! Worked in the pair's frame (A's, relative to A's reference point), as every
 //! query is.
 
-use crate::polytope::SMALL_POLYGON_MAX;
+use crate::polytope::{first_max, SMALL_POLYGON_MAX};
 use crate::real::{Real, V2};
 
 const M: usize = SMALL_POLYGON_MAX;
@@ -31,50 +31,40 @@ pub(crate) enum Nearest<R> {
 /// `None` where the squares this takes could under- or overflow (edges
 /// shorter than the square root of the least normal number): GJK answers.
 pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R>> {
-    let n = vertices.len().min(M);
-    let first = vertices.first().copied().unwrap_or_default();
-    // Coordinates apart, the unused slots copies of the first vertex
-    // (zero-length edges, masked below), and each edge's far end: then
-    // straight-line arithmetic over all slots, which the compiler keeps in
-    // SIMD lanes.
-    let (mut vx, mut vy) = ([first.x; M], [first.y; M]);
-    for (i, v) in vertices.iter().take(M).enumerate() {
-        vx[i] = v.x;
-        vy[i] = v.y;
+    let n = vertices.len();
+    if !(3..=M).contains(&n) {
+        return None;
     }
-    let (mut nx, mut ny) = ([first.x; M], [first.y; M]);
-    let last = n.saturating_sub(1);
-    nx[..last].copy_from_slice(&vx[1..=last]);
-    ny[..last].copy_from_slice(&vy[1..=last]);
-    let live: [bool; M] = core::array::from_fn(|i| i < n);
+    // Edge `i` in slot `i`; the slots past the last edge repeat the closing
+    // one, which then leads no choice (ties go to the first slot). Indices
+    // are selected, not branched on, and the arithmetic runs over every
+    // slot in SIMD lanes, coordinates apart.
+    let from: [V2<R>; M] = core::array::from_fn(|i| vertices[i.min(n - 1)]);
+    let to: [V2<R>; M] = core::array::from_fn(|i| vertices[if i + 1 < n { i + 1 } else { 0 }]);
     let mut along = [R::ZERO; M];
-    let mut squared = [R::INFINITY; M];
-    let mut outward = [-R::INFINITY; M];
+    let mut squared = [R::ZERO; M];
+    let mut outward = [R::ZERO; M];
     let mut ee = [R::ONE; M];
     let mut usable = true;
     for i in 0..M {
-        let (ex, ey) = (nx[i] - vx[i], ny[i] - vy[i]);
-        let (wx, wy) = (p.x - vx[i], p.y - vy[i]);
+        let (ex, ey) = (to[i].x - from[i].x, to[i].y - from[i].y);
+        let (wx, wy) = (p.x - from[i].x, p.y - from[i].y);
         let length2 = ex * ex + ey * ey;
         // The clamped parameter of the nearest point, the squared distance
         // to it, and the outward normal (not unit) dotted with the offset:
         // positive outside the edge's line.
         let t = ((wx * ex + wy * ey) / length2).max(R::ZERO).min(R::ONE);
         let (dx, dy) = (wx - ex * t, wy - ey * t);
-        usable &= !live[i] | ((length2 >= R::MIN_POSITIVE) & (length2 * (wx * wx + wy * wy)).is_finite());
+        usable &= (length2 >= R::MIN_POSITIVE) & (length2 * (wx * wx + wy * wy)).is_finite();
         along[i] = t;
-        ee[i] = core::hint::select_unpredictable(live[i], length2, R::ONE);
-        squared[i] = core::hint::select_unpredictable(live[i], dx * dx + dy * dy, R::INFINITY);
-        outward[i] = core::hint::select_unpredictable(live[i], ey * wx - ex * wy, -R::INFINITY);
+        ee[i] = length2;
+        squared[i] = dx * dx + dy * dy;
+        outward[i] = ey * wx - ex * wy;
     }
     if !usable {
         return None;
     }
-    let next = |i: usize| if i + 1 < n { i + 1 } else { 0 };
-    let vertex = |i: usize| V2::new(vx[i % M], vy[i % M]);
-    let edge = |i: usize| vertex(next(i)) - vertex(i);
-    let first_max =
-        |values: &[R; M]| (1..M).fold(0, |best, i| core::hint::select_unpredictable(values[i] > values[best], i, best));
+    let edge = |i: usize| to[i % M] - from[i % M];
     let unit_normal = |i: usize| edge(i).perp_cw().try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
     let deepest = first_max(&outward);
     if outward[deepest] < R::ZERO {
@@ -92,7 +82,7 @@ pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R
         let distance = (outward[best] / length).max(R::ZERO);
         return Some(Nearest::Outside { distance, normal, point: p - normal * distance });
     }
-    let corner = if t > R::ZERO { vertex(next(best)) } else { vertex(best) };
+    let corner = if t > R::ZERO { to[best] } else { from[best] };
     Some(match (p - corner).try_length_and_unit() {
         Some((distance, normal)) => Nearest::Outside { distance, normal, point: corner },
         // On the vertex: touching, along the deepest edge's normal.

@@ -9,7 +9,7 @@
 //! (B's vertices placed there once), as every query does.
 
 use crate::minkowski::Pair;
-use crate::polytope::SMALL_POLYGON_MAX;
+use crate::polytope::{first_max, SMALL_POLYGON_MAX};
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 
@@ -103,11 +103,7 @@ impl<R: Real> Axes<R> {
                 -R::INFINITY
             }
         });
-        let mut best = 0;
-        for i in 1..2 * M {
-            best = core::hint::select_unpredictable(separation[i] > separation[best % (2 * M)], i, best);
-        }
-        let best = best % (2 * M);
+        let best = first_max(&separation);
         let normal = self.normals[best];
         let normal = normal.try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
         // From zero: a separation of -0 is a depth of +0.

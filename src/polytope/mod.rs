@@ -92,6 +92,27 @@ fn scan_support<R: Real>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
     (best_i, at(vertices, best_i))
 }
 
+/// The first slot of the largest of `K` values (a power of two), by pairs
+/// of neighbours, each pair's winner carrying its value along: log2(K)
+/// levels of independent selects, not a chain of K dependent loads and
+/// selects. Ties keep the first slot, as a scan from the front does, for
+/// values without NaN.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn first_max<R: Real, const K: usize>(values: &[R; K]) -> usize {
+    const { assert!(K.is_power_of_two()) };
+    let mut best: [(usize, R); K] = core::array::from_fn(|i| (i, values[i]));
+    let mut width = K;
+    while width > 1 {
+        width /= 2;
+        for k in 0..width {
+            let (left, right) = (best[2 * k], best[2 * k + 1]);
+            best[k] = core::hint::select_unpredictable(right.1 > left.1, right, left);
+        }
+    }
+    best[0].0 % K
+}
+
 /// Vertex `i`, or the origin out of range (never the case for the callers,
 /// whose indices stay below the length; this keeps panics out of the code).
 #[inline(always)]
