@@ -5,6 +5,7 @@
 //! is compiled into a program: the intersection test alone pulls in neither
 //! EPA, closest points nor ray casts.
 
+use crate::cast::{cast_pair, CastOutcome, CastStart, Motion, ShapeCast};
 use crate::config::GjkConfig;
 use crate::epa::{Epa, PenetrationSolver};
 use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
@@ -262,6 +263,59 @@ impl<R: Real, P> Gjk<R, P> {
             other => other,
         };
         RayCast { outcome, ..local }
+    }
+    /// Where B, translating by `motion` (relative to A) from where `tb`
+    /// places it, first touches A: the fraction of the motion, the unit
+    /// normal from A towards B and the touching points (B's moved to the
+    /// contact), or a miss. Shapes overlapping or touching at the start get
+    /// [`CastOutcome::Start`] with their penetration, and whether the motion
+    /// separates them. Curved cores iterate within the ray-cast settings
+    /// ([`GjkConfig::max_raycast_iterations`], [`GjkConfig::raycast_epsilon`]).
+    ///
+    /// ```
+    /// use gjk2d::{CastOutcome, Circle, Gjk, Motion, Rectangle, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let wall = Rectangle::new(1.0, 4.0)?; // its left face at x = -0.5
+    /// let ball = Circle::new(0.5)?;
+    /// let start = Transform::from_translation(Vec2::new(-5.0, 0.0))?;
+    /// let motion = Motion::new(Vec2::new(8.0, 0.0))?;
+    /// match gjk.cast(&wall, &Transform::IDENTITY, &ball, &start, &motion).outcome {
+    ///     CastOutcome::Hit(hit) => {
+    ///         assert!((hit.distance - 4.0).abs() < 1e-6); // the ball's centre stops at x = -1
+    ///         assert!((hit.fraction - 0.5).abs() < 1e-6);
+    ///         assert_eq!(hit.normal, -Vec2::X); // from A (the wall) towards B (the ball)
+    ///         assert!((hit.point_b - Vec2::new(-0.5, 0.0)).length() < 1e-6);
+    ///     }
+    ///     other => panic!("expected a hit, got {other:?}"),
+    /// }
+    /// // Moving away, the ball never touches the wall.
+    /// let away = Motion::new(Vec2::new(-8.0, 0.0))?;
+    /// assert_eq!(gjk.cast(&wall, &Transform::IDENTITY, &ball, &start, &away).outcome, CastOutcome::Miss);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
+    pub fn cast<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>, motion: &Motion<R>) -> ShapeCast<R>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        if let Some(penetration) = self.penetration(a, ta, b, tb) {
+            let separating = V2::from_glam(penetration.normal).dot(motion.translation) > R::ZERO;
+            return ShapeCast {
+                outcome: CastOutcome::Start(CastStart { penetration, separating }),
+                iterations: penetration.iterations,
+                status: penetration.status,
+            };
+        }
+        let pair = Pair::new(a, ta, b, tb);
+        cast_pair(
+            &pair,
+            ta.inverse_rotate(motion.translation),
+            self.config.max_raycast_iterations(),
+            self.config.raycast_epsilon(),
+        )
     }
 }
 

@@ -10,6 +10,8 @@
 //! - [`Gjk::distance`]: distance, normal and closest points when apart, with
 //!   a certified error bound.
 //! - [`Gjk::raycast`]: first hit of a ray on any convex shape.
+//! - [`Gjk::cast`]: when a shape translating along a motion first touches
+//!   another (a linear shape cast).
 //!
 //! Shapes: [`Circle`], [`Polygon`], [`Rectangle`], [`Triangle`], [`Segment`],
 //! [`Capsule`], [`Ellipse`], [`HalfEllipse`], [`Slice`], [`Rounded`], and your
@@ -40,6 +42,7 @@ extern crate std;
 
 pub use glam;
 
+mod cast;
 mod checks;
 mod config;
 mod detector;
@@ -66,6 +69,7 @@ mod batch;
 #[cfg(feature = "defmt")]
 mod defmt_impls;
 
+pub use cast::{CastHit, CastOutcome, CastStart, Motion, ShapeCast};
 pub use config::{EpaConfig, GjkConfig, MIN_ITERATIONS};
 pub use detector::Gjk;
 pub use epa::{Epa, PenetrationEstimate, PenetrationSolver};
