@@ -92,6 +92,7 @@ pub(crate) fn load_cases(path: &str) -> Result<Family, String> {
     let extra = match cases {
         Cases::Pairs(_) => Extra::Pairs(Vec::new()),
         Cases::Rays(_) => Extra::Rays(Vec::new()),
+        Cases::Casts(_) => Extra::Casts(Vec::new()),
     };
     Ok(Family { name: format!("file:{name}"), stiff: false, cases, extra })
 }
@@ -137,6 +138,8 @@ pub(crate) fn save_cases(dir: &std::path::Path, families: &[Family]) -> std::io:
                     );
                 }
             }
+            // The case format has no casts: their cases are the generator's alone.
+            Cases::Casts(_) => {}
         }
         if !s.is_empty() {
             std::fs::write(dir.join(format!("{}.txt", f.name)), s)?;

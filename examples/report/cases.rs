@@ -2,6 +2,7 @@
 //! oracle says about a pair or a ray, and a family's cases.
 
 use gjk2d_oracle as oracle;
+use oracle::exact::Q;
 
 #[derive(Clone, Debug)]
 pub(crate) enum Sh {
@@ -102,9 +103,21 @@ pub(crate) struct RayCase {
     pub(crate) truth: RayTruth,
 }
 
+/// B moving by `m` against A: the first contact is a ray from the origin
+/// along `m` against their exact Minkowski difference `A - B`.
+pub(crate) struct CastCase {
+    pub(crate) a: Sh,
+    pub(crate) b: Sh,
+    pub(crate) m: [f64; 2],
+    /// The pair's size plus the motion's length: errors are over `L + t`.
+    pub(crate) l: f64,
+    pub(crate) truth: RayTruth,
+}
+
 pub(crate) enum Cases {
     Pairs(Vec<PairCase>),
     Rays(Vec<RayCase>),
+    Casts(Vec<CastCase>),
 }
 
 pub(crate) struct Family {
@@ -119,19 +132,26 @@ pub(crate) struct Family {
 pub(crate) enum Extra {
     Pairs(Vec<(Sh, Sh)>),
     Rays(Vec<([f64; 2], [f64; 2], f64, Sh)>),
+    Casts(Vec<(Sh, Sh, [f64; 2])>),
 }
 
 impl Family {
     pub(crate) fn extra_pairs(&self) -> &[(Sh, Sh)] {
         match &self.extra {
             Extra::Pairs(v) => v,
-            Extra::Rays(_) => &[],
+            _ => &[],
         }
     }
     pub(crate) fn extra_rays(&self) -> &[([f64; 2], [f64; 2], f64, Sh)] {
         match &self.extra {
             Extra::Rays(v) => v,
-            Extra::Pairs(_) => &[],
+            _ => &[],
+        }
+    }
+    pub(crate) fn extra_casts(&self) -> &[(Sh, Sh, [f64; 2])] {
+        match &self.extra {
+            Extra::Casts(v) => v,
+            _ => &[],
         }
     }
 }
@@ -151,7 +171,10 @@ fn oracle_pair(a: &Sh, b: &Sh) -> PairTruth {
 }
 
 fn oracle_ray(o: [f64; 2], d: [f64; 2], max_len: f64, s: &Sh) -> RayTruth {
-    let r = oracle::ray(o, d, max_len, &oracle::ExactShape::from(&s.oracle()));
+    ray_truth(oracle::ray(o, d, max_len, &oracle::ExactShape::from(&s.oracle())))
+}
+
+fn ray_truth(r: oracle::RayAnswer) -> RayTruth {
     RayTruth {
         verdict: match r.status {
             oracle::RayStatus::Hit => RayVerdict::Hit,
@@ -258,6 +281,51 @@ pub(crate) fn solve_pairs(raw: Vec<(Sh, Sh)>) -> Vec<PairCase> {
     parallel_map(raw, |(a, b)| {
         let truth = oracle_pair(&a, &b);
         PairCase { l: pair_l(&a, &b), a, b, truth }
+    })
+}
+
+/// The exact Minkowski difference `A - B`: the hull of the cores' vertex
+/// differences (rational, strictly convex, counter-clockwise; a point or a
+/// segment where it degenerates), swept by both radii.
+fn exact_difference(a: &Sh, b: &Sh) -> oracle::ExactShape {
+    let (ea, eb) = (oracle::ExactShape::from(&a.oracle()), oracle::ExactShape::from(&b.oracle()));
+    let mut pts: Vec<[Q; 2]> = Vec::new();
+    for p in ea.core_vertices() {
+        for q in eb.core_vertices() {
+            pts.push([&p[0] - &q[0], &p[1] - &q[1]]);
+        }
+    }
+    pts.sort();
+    pts.dedup();
+    let cross =
+        |o: &[Q; 2], p: &[Q; 2], q: &[Q; 2]| (&p[0] - &o[0]) * (&q[1] - &o[1]) - (&p[1] - &o[1]) * (&q[0] - &o[0]);
+    // Andrew's monotone chain, dropping collinear points.
+    let mut hull: Vec<[Q; 2]> = Vec::new();
+    for pass in 0..2 {
+        let start = hull.len();
+        let ordered: Box<dyn Iterator<Item = &[Q; 2]>> =
+            if pass == 0 { Box::new(pts.iter()) } else { Box::new(pts.iter().rev()) };
+        for p in ordered {
+            while hull.len() >= start + 2
+                && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], p) <= Q::from_integer(0.into())
+            {
+                hull.pop();
+            }
+            hull.push(p.clone());
+        }
+        hull.pop();
+    }
+    if hull.is_empty() {
+        hull = pts[..1].to_vec();
+    }
+    oracle::ExactShape::from_core(hull, ea.radius() + eb.radius())
+}
+
+pub(crate) fn solve_casts(raw: Vec<(Sh, Sh, [f64; 2])>) -> Vec<CastCase> {
+    parallel_map(raw, |(a, b, m)| {
+        let length = m[0].hypot(m[1]);
+        let truth = ray_truth(oracle::ray([0.0, 0.0], m, length, &exact_difference(&a, &b)));
+        CastCase { l: pair_l(&a, &b) + length, a, b, m, truth }
     })
 }
 

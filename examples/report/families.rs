@@ -1,7 +1,7 @@
 //! The seeded scene families: random numbers, shapes, and how each family places
 //! its pairs and rays.
 
-use crate::cases::{solve_pairs, solve_rays, Cases, Extra, Family, Sh};
+use crate::cases::{solve_casts, solve_pairs, solve_rays, Cases, Extra, Family, Sh};
 use crate::ours::build_g;
 use crate::timing::TIMED_CASES;
 use std::time::Instant;
@@ -248,9 +248,30 @@ fn make_ray(rng: &mut Rng, s: &Sh) -> ([f64; 2], [f64; 2], f64) {
     (o, d, max_len)
 }
 
+/// B (made around its centre) placed beside A (made at the origin), one
+/// time in ten already within reach, and moved towards a point near A by
+/// half to one and a half times the way there: hits, misses by a little,
+/// and starts in contact, none of them predictable.
+fn make_cast(
+    rng: &mut Rng,
+    mk_a: &dyn Fn(&mut Rng, [f64; 2]) -> Sh,
+    mk_b: &dyn Fn(&mut Rng, [f64; 2]) -> Sh,
+) -> (Sh, Sh, [f64; 2]) {
+    let a = mk_a(rng, [0.0, 0.0]);
+    let near = rng.f() < 0.1;
+    let (u, k) = (rng.unit(), if near { rng.range(0.0, 1.0) } else { rng.range(1.5, 4.0) });
+    let b = mk_b(rng, offset([0.0, 0.0], u, k));
+    let (ca, _) = a.bounds();
+    let (cb, _) = b.bounds();
+    let aim = offset(ca, rng.unit(), rng.range(0.0, 1.2));
+    let f = rng.range(0.5, 1.5);
+    (a, b, [r32((aim[0] - cb[0]) * f), r32((aim[1] - cb[1]) * f)])
+}
+
 /// judged by the oracle (the rest are only timed).
 type PairSpec = (String, bool, Vec<(Sh, Sh)>, usize);
 type RaySpec = (String, bool, Vec<([f64; 2], [f64; 2], f64, Sh)>, usize);
+type CastSpec = (String, Vec<(Sh, Sh, [f64; 2])>, usize);
 
 pub(crate) fn generate(scale: f64) -> Vec<Family> {
     let mut rng = Rng(0x6A6B_3264_2024);
@@ -304,6 +325,26 @@ pub(crate) fn generate(scale: f64) -> Vec<Family> {
     ray_family("ray_far_1e5", true, n(500), &mut rng, &|r| random_poly(r, 8, 1.0, 1.0, [1e5, -7e4]));
     ray_family("ray_poly1024", true, n(25), &mut rng, &|r| random_poly(r, 1024, 1.0, 1.0, [0.0, 0.0]));
 
+    let mut cast_specs: Vec<CastSpec> = Vec::new();
+    let mut cast_family = |name: &str, k: usize, rng: &mut Rng, mk_a: &dyn Fn(&mut Rng, [f64; 2]) -> Sh| {
+        let mut v = Vec::new();
+        while v.len() < k.max(TIMED_CASES) {
+            let (a, b, m) = make_cast(rng, mk_a, &|r, c| random_poly(r, 8, 1.0, 1.0, c));
+            if valid(&a) && valid(&b) && m != [0.0, 0.0] {
+                v.push((a, b, m));
+            }
+        }
+        cast_specs.push((name.to_string(), v, k));
+    };
+    cast_family("cast_poly8", n(1000), &mut rng, &|r, c| random_poly(r, 8, 1.0, 1.0, c));
+    cast_family("cast_rounded_poly", n(1000), &mut rng, &|r, c| {
+        if r.f() < 0.5 {
+            circle(r, 1.0, c)
+        } else {
+            capsule(r, 1.0, c)
+        }
+    });
+
     let mut out = Vec::new();
     for (name, stiff, mut raw, judged) in pair_specs {
         let t = Instant::now();
@@ -318,6 +359,13 @@ pub(crate) fn generate(scale: f64) -> Vec<Family> {
         let cases = solve_rays(raw);
         eprintln!("[report] oracle: {name:<16} {:5} rays  in {:6.2} s", cases.len(), t.elapsed().as_secs_f64());
         out.push(Family { name, stiff, cases: Cases::Rays(cases), extra: Extra::Rays(extra) });
+    }
+    for (name, mut raw, judged) in cast_specs {
+        let t = Instant::now();
+        let extra = raw.split_off(judged);
+        let cases = solve_casts(raw);
+        eprintln!("[report] oracle: {name:<16} {:5} casts in {:6.2} s", cases.len(), t.elapsed().as_secs_f64());
+        out.push(Family { name, stiff: false, cases: Cases::Casts(cases), extra: Extra::Casts(extra) });
     }
     out
 }

@@ -1,7 +1,7 @@
 //! Accuracy bookkeeping, shared by gjk2d and parry: each answer judged against the
 //! exact one.
 
-use crate::cases::{PairCase, RayCase, RayVerdict};
+use crate::cases::{PairCase, RayTruth, RayVerdict};
 use gjk2d::Status;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -10,6 +10,7 @@ pub(crate) enum Query {
     Distance,
     Penetration,
     Ray,
+    Cast,
 }
 
 impl Query {
@@ -19,6 +20,7 @@ impl Query {
             Query::Distance => "distance",
             Query::Penetration => "penetration",
             Query::Ray => "ray",
+            Query::Cast => "cast",
         }
     }
 }
@@ -114,22 +116,25 @@ pub(crate) fn judge_pair(acc: &mut Acc, q: Query, c: &PairCase, eps: f64, out: O
     }
 }
 
-pub(crate) fn judge_ray(acc: &mut Acc, c: &RayCase, eps: f64, out: Out, status: (Status, Option<u32>)) {
+/// A ray's answer (or a cast's, as the ray against the pair's difference:
+/// `Inside` for overlapping at the start) against the exact one; errors
+/// over the case's scale `l`.
+pub(crate) fn judge_ray(acc: &mut Acc, truth: &RayTruth, l: f64, eps: f64, out: Out, status: (Status, Option<u32>)) {
     let Out::Ray(v, t, n) = out else { unreachable!() };
     acc.cases += 1;
     acc.count_status(status);
-    let judged = c.truth.margin > 8.0 * eps * c.l;
+    let judged = truth.margin > 8.0 * eps * l;
     acc.judged += judged as usize;
-    acc.wrong += (judged && v != c.truth.verdict) as usize;
+    acc.wrong += (judged && v != truth.verdict) as usize;
     if v == RayVerdict::Hit {
         if !t.is_finite() || !finite2(n) {
             acc.nonfinite += 1;
             return;
         }
-        if c.truth.verdict == RayVerdict::Hit {
-            acc.errs.push((t - c.truth.t).abs() / c.l);
-            if judged && c.truth.normal_unique {
-                acc.nerrs.push(angle(n, c.truth.normal));
+        if truth.verdict == RayVerdict::Hit {
+            acc.errs.push((t - truth.t).abs() / l);
+            if judged && truth.normal_unique {
+                acc.nerrs.push(angle(n, truth.normal));
             }
         }
     }

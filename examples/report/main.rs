@@ -16,7 +16,7 @@
 //!
 //! Errors are relative to the pair's size L (the larger bounding radius about the
 //! vertex mean); for rays L = max(bounding radius, distance from the ray origin to the
-//! shape's center). A verdict counts as wrong only when the exact margin exceeds
+//! shape's center); for casts L is the pair's plus the motion's length. A verdict counts as wrong only when the exact margin exceeds
 //! 8 eps L (eps of the precision under test): closer cases are too close to call.
 //!
 //! Writes `report.md` (the table, date, machine), `sweep.csv` and `sweep.svg`
@@ -101,11 +101,11 @@ fn main() {
     let table = table_rows(&rows);
     let (sh, st) = stability(&rows);
     let tg = targets(&rows);
-    let notes = "Errors are relative to L, the larger bounding radius of the pair; for rays L = max(bounding radius, distance from the ray origin to the shape's center). \
+    let notes = "Errors are relative to L, the larger bounding radius of the pair; for rays L = max(bounding radius, distance from the ray origin to the shape's center); for casts (B moving by m against A) L is the pair's plus |m|, and the exact answer is the ray from the origin along m against the exact Minkowski difference A - B. \
 A verdict is wrong only where the exact margin exceeds 8 eps L (eps of the precision). \
 Value errors are taken where the query and the exact answer agree on the verdict; normal errors where the exact normal is unique. \
 Exact answers: gjk2d-oracle (rational arithmetic), except ellipse_circle (Eberly's point-to-ellipse distance, bisected to the last f64 bit). \
-parry2d 0.31 / parry2d-f64 0.31 through their public dyn-Shape API: intersection_test, distance (normal from closest_points), contact with prediction 0 for penetration, cast_ray_and_get_normal (solid) for rays; polygons built with from_convex_polyline_unmodified. \
+parry2d 0.31 / parry2d-f64 0.31 through their public dyn-Shape API: intersection_test, distance (normal from closest_points), contact with prediction 0 for penetration, cast_ray_and_get_normal (solid) for rays, cast_shapes (A still, B moving by m, max time of impact 1; a penetration at the start counts as gjk2d's Start) for casts; polygons built with from_convex_polyline_unmodified. \
 parry has no ellipse. mean iters: GJK (+EPA) or ray-cast iterations reported by gjk2d, averaged over the queries that returned a result (0 for closed-form rays). iter-limit: results with Status::IterationLimit (\"+N capacity\": EPA's polytope filled, Status::CapacityLimit). ns/query: median over passes, each pass asking 16,384 distinct cases of the family once (its judged cases and more of the same kind, so the branch predictor cannot learn them; files: their own cases), gjk2d f32/f64 and parry f32/f64 passes interleaved in rotating order, single thread.";
     println!("\ngjk2d error against run time ({mode} run, {}, {})\n", today(), machine());
     println!("{}", plain_table(&HEADER, &table));

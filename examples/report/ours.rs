@@ -4,7 +4,7 @@
 use crate::cases::{Cases, Family, RayVerdict, Sh};
 use crate::judge::{judge_pair, judge_ray, Acc, Out, Query};
 use crate::timing::{time_batches, Batch, Meas, TIMED_CASES};
-use gjk2d::{Capsule, Circle, Ellipse, Gjk, Polygon, Ray, RayOutcome, Real, Status, Transform};
+use gjk2d::{Capsule, CastOutcome, Circle, Ellipse, Gjk, Motion, Polygon, Ray, RayOutcome, Real, Status, Transform};
 use std::hint::black_box;
 
 /// The polygon boxed, as parry's shapes are (`Box<dyn Shape>`): a scene's
@@ -103,7 +103,7 @@ fn g_pair_query<R: Real, const N: usize>(
                 p.map_or((Status::Converged, None), |s| (s.status, Some(s.iterations))),
             )
         }
-        Query::Ray => unreachable!(),
+        Query::Ray | Query::Cast => unreachable!(),
     }
 }
 
@@ -117,9 +117,28 @@ fn g_ray<R: Real, const N: usize>(gjk: &Gjk<R>, ray: &Ray<R>, max: R, s: &GS<R, 
     (out, (r.status, Some(r.iterations)))
 }
 
+/// The cast's answer as the ray against the pair's difference: a hit's
+/// distance travelled and normal, a miss, or `Inside` for overlapping at
+/// the start.
+fn g_cast<R: Real, const N: usize>(
+    gjk: &Gjk<R>,
+    a: &GS<R, N>,
+    b: &GS<R, N>,
+    m: &Motion<R>,
+) -> (Out, (Status, Option<u32>)) {
+    let c = with_pair!(a, b, |x, y| gjk.cast(x, &a.t, y, &b.t, m));
+    let out = match c.outcome {
+        CastOutcome::Hit(h) => Out::Ray(RayVerdict::Hit, h.distance.to_f64(), v2::<R>(h.normal)),
+        CastOutcome::Miss => Out::Ray(RayVerdict::Miss, 0.0, [0.0; 2]),
+        CastOutcome::Start(_) => Out::Ray(RayVerdict::Inside, 0.0, [0.0; 2]),
+    };
+    (out, (c.status, Some(c.iterations)))
+}
+
 pub(crate) struct GFamily<R: Real, const N: usize> {
     pairs: Vec<(GS<R, N>, GS<R, N>)>,
     rays: Vec<(Ray<R>, R, GS<R, N>)>,
+    casts: Vec<(GS<R, N>, GS<R, N>, Motion<R>)>,
 }
 
 pub(crate) fn build_family<R: Real, const N: usize>(f: &Family) -> GFamily<R, N> {
@@ -133,6 +152,7 @@ pub(crate) fn build_family<R: Real, const N: usize>(f: &Family) -> GFamily<R, N>
                 .map(|(a, b)| (build_g(a).expect("valid shape"), build_g(b).expect("valid shape")))
                 .collect(),
             rays: Vec::new(),
+            casts: Vec::new(),
         },
         Cases::Rays(c) => GFamily {
             pairs: Vec::new(),
@@ -142,6 +162,20 @@ pub(crate) fn build_family<R: Real, const N: usize>(f: &Family) -> GFamily<R, N>
                 .chain(f.extra_rays().iter().map(|(o, d, m, s)| (o, d, *m, s)))
                 .map(|(o, d, max_len, s)| {
                     (Ray::new(v(o), v(d)).expect("valid ray"), R::from_f64(max_len), build_g(s).expect("valid shape"))
+                })
+                .collect(),
+            casts: Vec::new(),
+        },
+        Cases::Casts(c) => GFamily {
+            pairs: Vec::new(),
+            rays: Vec::new(),
+            casts: c
+                .iter()
+                .map(|c| (&c.a, &c.b, &c.m))
+                .chain(f.extra_casts().iter().map(|(a, b, m)| (a, b, m)))
+                .map(|(a, b, m)| {
+                    let (a, b) = (build_g(a).expect("valid shape"), build_g(b).expect("valid shape"));
+                    (a, b, Motion::new(v(m)).expect("valid motion"))
                 })
                 .collect(),
         },
@@ -188,16 +222,29 @@ pub(crate) fn accuracy_and_batch_g<'a, R: Real, const N: usize>(
                         Query::Penetration => {
                             black_box(with_pair!(a, b, |x, y| gjk.penetration(x, &a.t, y, &b.t)));
                         }
-                        Query::Ray => unreachable!(),
+                        Query::Ray | Query::Cast => unreachable!(),
                     }
                 }
             });
             (acc, gf.pairs.len().min(TIMED_CASES), batch)
         }
+        Cases::Casts(cases) => {
+            for (c, (a, b, m)) in cases.iter().zip(&gf.casts) {
+                let (out, lim) = g_cast(gjk, a, b, m);
+                judge_ray(&mut acc, &c.truth, c.l, eps, out, lim);
+            }
+            let batch: Batch<'a> = Box::new(move || {
+                for (a, b, m) in gf.casts.iter().take(TIMED_CASES) {
+                    let (a, b) = (black_box(a), black_box(b));
+                    black_box(with_pair!(a, b, |x, y| gjk.cast(x, &a.t, y, &b.t, black_box(m))));
+                }
+            });
+            (acc, gf.casts.len().min(TIMED_CASES), batch)
+        }
         Cases::Rays(cases) => {
             for (c, (ray, max, s)) in cases.iter().zip(&gf.rays) {
                 let (out, lim) = g_ray(gjk, ray, *max, s);
-                judge_ray(&mut acc, c, eps, out, lim);
+                judge_ray(&mut acc, &c.truth, c.l, eps, out, lim);
             }
             let batch: Batch<'a> = Box::new(move || {
                 for (ray, max, s) in gf.rays.iter().take(TIMED_CASES) {

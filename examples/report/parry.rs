@@ -68,7 +68,21 @@ macro_rules! parry_side {
                         Ok(Some(c)) if c.dist <= 0.0 => Out::Value(Some((-(c.dist as f64), w(c.normal1)))),
                         _ => Out::Value(None),
                     },
-                    Query::Ray => unreachable!(),
+                    Query::Ray | Query::Cast => unreachable!(),
+                }
+            }
+
+            /// B moving by `m` against A: parry's shape cast, its time of
+            /// impact scaled to the distance travelled; a penetration at
+            /// the start is `Inside`.
+            fn cast_query(a: &PS, b: &PS, m: Vector) -> Out {
+                let options = query::ShapeCastOptions::with_max_time_of_impact(1.0);
+                match query::cast_shapes(&a.pos, Vector::ZERO, &*a.s, &b.pos, m, &*b.s, options) {
+                    Ok(Some(h)) if h.status == query::ShapeCastStatus::PenetratingOrWithinTargetDist => {
+                        Out::Ray(RayVerdict::Inside, 0.0, [0.0; 2])
+                    }
+                    Ok(Some(h)) => Out::Ray(RayVerdict::Hit, h.time_of_impact as f64 * m.length() as f64, w(h.normal1)),
+                    _ => Out::Ray(RayVerdict::Miss, 0.0, [0.0; 2]),
                 }
             }
 
@@ -83,6 +97,7 @@ macro_rules! parry_side {
             pub enum PFamily {
                 Pairs(Vec<(PS, PS)>),
                 Rays(Vec<(Ray, $R, PS)>),
+                Casts(Vec<(PS, PS, Vector)>),
                 Unsupported,
             }
 
@@ -110,6 +125,15 @@ macro_rules! parry_side {
                             .collect();
                         v.map_or(PFamily::Unsupported, PFamily::Rays)
                     }
+                    Cases::Casts(c) => {
+                        let v: Option<Vec<(PS, PS, Vector)>> = c
+                            .iter()
+                            .map(|c| (&c.a, &c.b, &c.m))
+                            .chain(f.extra_casts().iter().map(|(a, b, m)| (a, b, m)))
+                            .map(|(a, b, m)| Some((build(a)?, build(b)?, v(m))))
+                            .collect();
+                        v.map_or(PFamily::Unsupported, PFamily::Casts)
+                    }
                 }
             }
 
@@ -134,7 +158,7 @@ macro_rules! parry_side {
                                     Query::Penetration => {
                                         let _ = black_box(query::contact(&a.pos, &*a.s, &b.pos, &*b.s, 0.0));
                                     }
-                                    Query::Ray => unreachable!(),
+                                    Query::Ray | Query::Cast => unreachable!(),
                                 }
                             }
                         });
@@ -142,7 +166,7 @@ macro_rules! parry_side {
                     }
                     (Cases::Rays(cases), PFamily::Rays(rays)) => {
                         for (c, (ray, max, s)) in cases.iter().zip(rays) {
-                            judge_ray(&mut acc, c, eps, ray_query(ray, *max, s), (Status::Converged, None));
+                            judge_ray(&mut acc, &c.truth, c.l, eps, ray_query(ray, *max, s), (Status::Converged, None));
                         }
                         let batch: Batch<'a> = Box::new(move || {
                             for (ray, max, s) in rays.iter().take(TIMED_CASES) {
@@ -151,6 +175,27 @@ macro_rules! parry_side {
                             }
                         });
                         Some((acc, rays.len().min(TIMED_CASES), batch))
+                    }
+                    (Cases::Casts(cases), PFamily::Casts(casts)) => {
+                        for (c, (a, b, m)) in cases.iter().zip(casts) {
+                            judge_ray(&mut acc, &c.truth, c.l, eps, cast_query(a, b, *m), (Status::Converged, None));
+                        }
+                        let batch: Batch<'a> = Box::new(move || {
+                            let options = query::ShapeCastOptions::with_max_time_of_impact(1.0);
+                            for (a, b, m) in casts.iter().take(TIMED_CASES) {
+                                let (a, b) = (black_box(a), black_box(b));
+                                let _ = black_box(query::cast_shapes(
+                                    &a.pos,
+                                    Vector::ZERO,
+                                    &*a.s,
+                                    &b.pos,
+                                    *m,
+                                    &*b.s,
+                                    options,
+                                ));
+                            }
+                        });
+                        Some((acc, casts.len().min(TIMED_CASES), batch))
                     }
                     _ => None,
                 }

@@ -21,6 +21,7 @@ fn queries_of(f: &Family) -> &'static [Query] {
     match f.cases {
         Cases::Pairs(_) => &[Query::Intersect, Query::Penetration, Query::Distance],
         Cases::Rays(_) => &[Query::Ray],
+        Cases::Casts(_) => &[Query::Cast],
     }
 }
 
@@ -28,6 +29,7 @@ pub(crate) fn max_vertices(f: &Family) -> usize {
     match &f.cases {
         Cases::Pairs(c) => c.iter().map(|c| c.a.vertex_count().max(c.b.vertex_count())).max().unwrap_or(0),
         Cases::Rays(c) => c.iter().map(|c| c.s.vertex_count()).max().unwrap_or(0),
+        Cases::Casts(c) => c.iter().map(|c| c.a.vertex_count().max(c.b.vertex_count())).max().unwrap_or(0),
     }
 }
 
