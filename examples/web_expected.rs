@@ -10,6 +10,7 @@
 //! shape 3 2 1 0.5 2 1.2 0 ...
 //! pair 0 1            # A and B, indices into the shapes
 //! ray -7 -4 0.8 0.6   # origin and direction, cast unbounded at every shape
+//! motion 2.2 -1       # A's motion, cast against every other shape
 //! end                 # answers the scene so far; more scenes may follow
 //! ```
 //!
@@ -19,13 +20,18 @@
 //! "distance":[d,nx,ny,ax,ay,bx,by,error_bound,iterations,status]|null,"ray":[shape,code,distance,px,py,nx,ny,iterations,status]}`.
 //! The ray answer is the first shape (lowest index) the ray starts inside
 //! (code 2), else the nearest hit (code 1, ties to the lower index), else
-//! `[-1,0]` for a miss. Status: 0 converged, 1 iteration limit, 2 capacity limit.
+//! `[-1,0]` for a miss. The cast answer, `"cast":[shape,code,...]`, is A moving by the
+//! motion against every other shape as the page picks it: the first shape (lowest
+//! index) A touches or overlaps at the start (code 2: `nx,ny,depth,separating,iterations,status`),
+//! else the earliest hit (code 1, ties to the lower index:
+//! `fraction,distance,nx,ny,ax,ay,bx,by,error_bound,iterations,status`), else `[-1,0]`.
+//! Status: 0 converged, 1 iteration limit, 2 capacity limit.
 //!
 //! `cargo run --release --example web_expected < scene.txt`
 
 use gjk2d::{
-    Capsule, Circle, Ellipse, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded, Segment, Slice,
-    Status, SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real, Rectangle,
+    Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
 };
 use std::fmt::Write as _;
 use std::io::Read;
@@ -113,6 +119,7 @@ struct Scene {
     records: Vec<Vec<f64>>,
     pair: (usize, usize),
     ray: [f64; 4],
+    motion: [f64; 2],
 }
 
 fn answer<R: Real>(scene: &Scene) -> String {
@@ -185,13 +192,45 @@ fn answer<R: Real>(scene: &Scene) -> String {
         }
         None => "[-1,0]".into(),
     };
-    format!("{{\"intersects\":{intersects},\"penetration\":{penetration},\"distance\":{distance},\"ray\":{ray}}}")
+    let motion = Motion::new(v::<R>(scene.motion[0], scene.motion[1])).expect("motion");
+    let (moving, tm) = (bodies[scene.pair.0].0.as_dyn(), &bodies[scene.pair.0].1);
+    let mut first: Option<(usize, u32, Vec<f64>)> = None;
+    for (k, (s, t)) in bodies.iter().enumerate() {
+        if k == scene.pair.0 {
+            continue;
+        }
+        let cast = gjk.cast(s.as_dyn(), t, moving, tm, &motion);
+        let tail = [cast.iterations as f64, status(cast.status) as f64];
+        match cast.outcome {
+            CastOutcome::Start(start) => {
+                let (p, n) = (start.penetration, c(start.penetration.normal));
+                let separating = start.separating as u32 as f64;
+                first = Some((k, 2, vec![n[0], n[1], p.depth.to_f64(), separating, tail[0], tail[1]]));
+                break;
+            }
+            CastOutcome::Hit(h) => {
+                if first.as_ref().is_none_or(|(_, _, v)| h.fraction.to_f64() < v[0]) {
+                    let (n, pa, pb) = (c(h.normal), c(h.point_a), c(h.point_b));
+                    let at = [h.fraction.to_f64(), h.distance.to_f64(), n[0], n[1], pa[0], pa[1], pb[0], pb[1]];
+                    first = Some((k, 1, [&at[..], &[h.error_bound.to_f64()], &tail[..]].concat()));
+                }
+            }
+            CastOutcome::Miss => {}
+        }
+    }
+    let cast = match first {
+        Some((k, code, values)) => list(&[&[k as f64, code as f64][..], &values].concat()),
+        None => "[-1,0]".into(),
+    };
+    format!(
+        "{{\"intersects\":{intersects},\"penetration\":{penetration},\"distance\":{distance},\"ray\":{ray},\"cast\":{cast}}}"
+    )
 }
 
 fn main() {
     let mut input = String::new();
     std::io::stdin().read_to_string(&mut input).expect("stdin");
-    let mut scene = Scene { records: Vec::new(), pair: (0, 1), ray: [0.0, 0.0, 1.0, 0.0] };
+    let mut scene = Scene { records: Vec::new(), pair: (0, 1), ray: [0.0, 0.0, 1.0, 0.0], motion: [1.0, 0.0] };
     let mut f64_precision = false;
     for line in input.lines() {
         let mut words = line.split_whitespace();
@@ -206,6 +245,7 @@ fn main() {
             }
             "pair" => scene.pair = (nums[0] as usize, nums[1] as usize),
             "ray" => scene.ray = [nums[0], nums[1], nums[2], nums[3]],
+            "motion" => scene.motion = [nums[0], nums[1]],
             "end" => {
                 let out = if f64_precision { answer::<f64>(&scene) } else { answer::<f32>(&scene) };
                 println!("{out}");

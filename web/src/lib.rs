@@ -28,6 +28,10 @@
 //! - `distance{32,64}(i, j)` -> 1 apart / 0 overlap; out = [distance, nx, ny, ax, ay, bx, by, error_bound, iterations, status]
 //! - `raycast{32,64}(i, ox, oy, dx, dy, max)` -> 0 miss, 1 hit, 2 inside (-1: bad shape or ray);
 //!   out = [distance, px, py, nx, ny, iterations, status]
+//! - `cast{32,64}(i, j, mx, my)`: shape `j` moving by (mx, my) against shape `i` -> 0 miss,
+//!   1 hit, 2 touching or overlapping at the start (-1: bad shape or motion); out = hit:
+//!   [fraction, distance, nx, ny, ax, ay, bx, by, error_bound, iterations, status], start:
+//!   [nx, ny, depth, separating, iterations, status], miss: [iterations, status]
 //!
 //! Status codes: 0 converged, 1 iteration limit, 2 capacity limit.
 //!
@@ -49,8 +53,8 @@ compile_error!("enable the f32 feature, the f64 feature, or both (the default)")
 use core::cell::UnsafeCell;
 use core::mem::MaybeUninit;
 use gjk2d::{
-    Capsule, Circle, Ellipse, Error, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded, Segment,
-    Slice, Status, SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Error, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real, Rectangle,
+    Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
 };
 
 /// Most shapes a scene holds.
@@ -297,6 +301,44 @@ fn raycast<R: Real>(store: &Store<R>, i: u32, ox: f64, oy: f64, dx: f64, dy: f64
     }
 }
 
+fn cast<R: Real>(store: &Store<R>, i: u32, j: u32, mx: f64, my: f64) -> i32 {
+    let (Some((a, ta)), Some((b, tb))) = (store.get(i), store.get(j)) else {
+        return -1;
+    };
+    let Ok(motion) = Motion::new(vector::<R>(mx, my)) else {
+        return -1;
+    };
+    let cast = Gjk::<R>::new().cast(a, ta, b, tb, &motion);
+    let o = out();
+    let (iterations, status) = (cast.iterations as f64, status_code(cast.status));
+    match cast.outcome {
+        CastOutcome::Hit(h) => {
+            o[0] = h.fraction.to_f64();
+            o[1] = h.distance.to_f64();
+            put_vec::<R>(o, 2, h.normal);
+            put_vec::<R>(o, 4, h.point_a);
+            put_vec::<R>(o, 6, h.point_b);
+            o[8] = h.error_bound.to_f64();
+            o[9] = iterations;
+            o[10] = status;
+            1
+        }
+        CastOutcome::Start(start) => {
+            put_vec::<R>(o, 0, start.penetration.normal);
+            o[2] = start.penetration.depth.to_f64();
+            o[3] = start.separating as u32 as f64;
+            o[4] = iterations;
+            o[5] = status;
+            2
+        }
+        CastOutcome::Miss => {
+            o[0] = iterations;
+            o[1] = status;
+            0
+        }
+    }
+}
+
 /// The scene buffer: `MAX_SHAPES * STRIDE` `f64`s.
 #[unsafe(no_mangle)]
 pub extern "C" fn scene_ptr() -> *mut f64 {
@@ -380,6 +422,16 @@ pub extern "C" fn raycast32(i: u32, ox: f64, oy: f64, dx: f64, dy: f64, max: f64
 #[unsafe(no_mangle)]
 pub extern "C" fn raycast64(i: u32, ox: f64, oy: f64, dx: f64, dy: f64, max: f64) -> i32 {
     raycast(store64(), i, ox, oy, dx, dy, max)
+}
+#[cfg(feature = "f32")]
+#[unsafe(no_mangle)]
+pub extern "C" fn cast32(i: u32, j: u32, mx: f64, my: f64) -> i32 {
+    cast(store32(), i, j, mx, my)
+}
+#[cfg(feature = "f64")]
+#[unsafe(no_mangle)]
+pub extern "C" fn cast64(i: u32, j: u32, mx: f64, my: f64) -> i32 {
+    cast(store64(), i, j, mx, my)
 }
 
 /// The determinism batch shared with the host test and the firmware.

@@ -101,6 +101,7 @@ try {
         penetration: pen,
         distance: dist,
         ray,
+        cast: window.gjk.readCast(),
       },
     };
   });
@@ -181,6 +182,19 @@ try {
   c = await record("ray aimed at the circle (f32)");
   check(c.shown.ray[0] === 0 && c.shown.ray[1] === 1, `the ray hits the circle: ${JSON.stringify(c.shown.ray)}`);
 
+  // Drag A's motion arrow towards the rectangle (2): the cast touches it.
+  {
+    const a = await shapePos(1), rect = await shapePos(2);
+    const m0 = await page.evaluate(() => window.gjk.state.motion);
+    await dragScreen(await screenOf([a[0] + m0[0], a[1] + m0[1]]), await screenOf([rect[0] + 0.2, rect[1]]));
+    const m1 = await page.evaluate(() => window.gjk.state.motion);
+    check(Math.abs(a[0] + m1[0] - rect[0] - 0.2) < 0.05 && Math.abs(a[1] + m1[1] - rect[1]) < 0.05,
+      `the drag moved the motion arrow's tip: ${m0} -> ${m1}`);
+    c = await record("motion dragged onto the rectangle (f32)");
+    check(c.shown.cast[0] === 2 && c.shown.cast[1] === 1 && c.shown.cast[2] > 0 && c.shown.cast[2] < 1,
+      `the cast touches the rectangle on the way: ${JSON.stringify(c.shown.cast)}`);
+  }
+
   // Tap the ellipse: it becomes A.
   const ell = await shapePos(6);
   await page.mouse.click(...(await screenOf([ell[0], ell[1]])));
@@ -254,7 +268,7 @@ try {
         scene: JSON.parse(get("stage").dataset.scene),
         shown: {
           intersects: [get("intersects").dataset.value === "true" ? 1 : 0, Number(get("intersects-iter").dataset.value)],
-          penetration: pen, distance: dist, ray,
+          penetration: pen, distance: dist, ray, cast: g.readCast(),
         },
       };
     };
@@ -299,6 +313,7 @@ try {
     for (const r of c.scene.records) lines.push(`shape ${r.join(" ")}`);
     lines.push(`pair ${c.scene.a} ${c.scene.b}`);
     lines.push(`ray ${c.scene.ray.join(" ")}`);
+    lines.push(`motion ${c.scene.motion.join(" ")}`);
     lines.push("end");
   }
   const native = spawnSync("cargo", ["run", "--quiet", "--release", "--example", "web_expected"], {
@@ -315,9 +330,11 @@ try {
     penetration: e.penetration && e.penetration.slice(0, 5),
     distance: e.distance && e.distance.slice(0, 9),
     ray: e.ray.length <= 2 ? e.ray : e.ray[1] === 1 ? e.ray.slice(0, 8) : [e.ray[0], e.ray[1], e.ray[7]],
+    cast: e.cast.length <= 2 ? e.cast : e.cast[1] === 1 ? e.cast.slice(0, 12) : [...e.cast.slice(0, 4), e.cast[6]],
   });
   let compared = 0, numbers = 0, mismatched = 0;
   const kinds = new Set(), queries = { overlap: 0, apart: 0, hit: 0, inside: 0, miss: 0 };
+  const casts = { hit: 0, start: 0, miss: 0 };
   cases.forEach((c, k) => {
     const want = pick(expected[k]);
     for (const key of Object.keys(want)) {
@@ -333,9 +350,12 @@ try {
     c.scene.records.forEach((r) => kinds.add(r[0]));
     queries[c.shown.intersects[0] ? "overlap" : "apart"]++;
     queries[c.shown.ray[1] === 1 ? "hit" : c.shown.ray[1] === 2 ? "inside" : "miss"]++;
+    casts[c.shown.cast[1] === 1 ? "hit" : c.shown.cast[1] === 2 ? "start" : "miss"]++;
   });
   log(`compared ${compared} scenes (${cases.length - covered.length} interactive, ${covered.length} coverage), ${numbers} numbers, ${mismatched} mismatches; ` +
-    `${kinds.size} shape kinds; pairs overlapping ${queries.overlap}, apart ${queries.apart}; rays hit ${queries.hit}, inside ${queries.inside}, miss ${queries.miss}`);
+    `${kinds.size} shape kinds; pairs overlapping ${queries.overlap}, apart ${queries.apart}; rays hit ${queries.hit}, inside ${queries.inside}, miss ${queries.miss}; ` +
+    `casts hit ${casts.hit}, start in contact ${casts.start}, miss ${casts.miss}`);
+  check(casts.hit > 0 && casts.start > 0 && casts.miss > 0, "cast hits, starts in contact and misses covered");
   check(kinds.size === 10, "every shape kind covered");
   check(queries.overlap > 0 && queries.apart > 0 && queries.hit > 0, "overlaps, separations and ray hits covered");
 

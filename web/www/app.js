@@ -51,6 +51,11 @@ function initialShapes() {
   ];
 }
 
+// A's motion for the shape cast, relative to its position.
+function initialMotion() {
+  return [2.4, -1.3];
+}
+
 function initialRay() {
   return { o: [-8.6, -4.6], e: [-5.6, -3.3] };
 }
@@ -58,6 +63,7 @@ function initialRay() {
 const state = {
   shapes: initialShapes(),
   ray: initialRay(),
+  motion: initialMotion(),
   prec: "f32",
   a: 1,          // index of shape A
   b: -1,         // index of shape B; -1: the nearest shape to A
@@ -213,6 +219,25 @@ function castRay() {
   return best;
 }
 
+// A moving by its motion, cast against every other shape: the first shape
+// A touches or overlaps at the start (lowest index), else the earliest hit
+// (ties to the lower index). examples/web_expected.rs does the same.
+function castMotion() {
+  const [mx, my] = state.motion;
+  const cast = q("cast");
+  let best = null;
+  for (let k = 0; k < state.shapes.length; k++) {
+    if (k === state.a) continue;
+    const code = cast(k, state.a, mx, my);
+    if (code === 2) { best = { shape: k, code, v: out(6) }; break; }
+    if (code === 1) {
+      const v = out(11);
+      if (!best || v[0] < best.v[0]) best = { shape: k, code, v };
+    }
+  }
+  return best;
+}
+
 function pairQueries(i, j) {
   const hit = q("intersects")(i, j);
   const det = out(3);
@@ -245,7 +270,7 @@ function update() {
       if (q("intersects")(i, j) === 1) { overlaps.add(i); overlaps.add(j); }
     }
   }
-  state.results = { ...pair, ray: castRay(), overlaps };
+  state.results = { ...pair, ray: castRay(), cast: castMotion(), overlaps };
   state.dirty = false;
   renderReadouts();
   exportScene();
@@ -398,6 +423,27 @@ function renderReadouts() {
     $("ray-iter").textContent = ray.v[5] === 0 ? "0 · closed form" : iterText(ray.v[5], ray.v[6]);
   } else setNum("ray-iter", null);
 
+  const cast = r.cast;
+  const co = $("cast-outcome");
+  $("card-cast").dataset.state = cast ? "some" : "none";
+  co.dataset.shape = cast ? String(cast.shape) : "-1";
+  co.dataset.code = cast ? String(cast.code) : "0";
+  co.textContent = !cast ? "no contact" : cast.code === 2
+    ? `${cast.v[3] ? "leaving" : "in contact:"} ${name(cast.shape)}`
+    : `first touches ${name(cast.shape)}`;
+  const hit = cast && cast.code === 1 ? cast.v : null;
+  setNum("cast-fraction", hit ? hit[0] : null);
+  setNum("cast-dist", hit ? hit[1] : null);
+  setVec("cast-normal", hit ? hit[2] : cast ? cast.v[0] : null, hit ? hit[3] : cast ? cast.v[1] : null);
+  setVec("cast-point-a", hit ? hit[4] : null, hit ? hit[5] : null);
+  setVec("cast-point-b", hit ? hit[6] : null, hit ? hit[7] : null);
+  setNum("cast-err", hit ? hit[8] : null);
+  if (cast) {
+    const [n, st] = hit ? [hit[9], hit[10]] : [cast.v[4], cast.v[5]];
+    setNum("cast-iter", n);
+    $("cast-iter").textContent = iterText(n, st);
+  } else setNum("cast-iter", null);
+
   $("sel-a").value = String(state.a);
   $("sel-b").value = String(state.b);
 }
@@ -427,6 +473,7 @@ function exportScene() {
     a: state.a,
     b: state.bNow,
     ray: [ox, oy, state.ray.e[0] - ox, state.ray.e[1] - oy],
+    motion: state.motion.slice(),
     records: state.shapes.map(record),
   });
 }
@@ -711,6 +758,42 @@ function drawRay() {
   if (r && r.ray && r.ray.code === 2) pill("starts inside", o, colors.ray, 0, -22);
 }
 
+// The tip of A's motion arrow: where the cast would take A's position.
+function motionHandle() {
+  const s = state.shapes[state.a];
+  return [s.x + state.motion[0], s.y + state.motion[1]];
+}
+
+// A's motion as a dashed arrow, and A drawn where the cast first touches.
+function drawCast() {
+  const s = state.shapes[state.a];
+  const tip = motionHandle();
+  ctx.setLineDash([5, 5]);
+  arrow([s.x, s.y], tip, alpha(colors.a, 0.75), 1.6, 8);
+  ctx.setLineDash([]);
+  const [hx, hy] = S(tip);
+  ctx.beginPath(); ctx.arc(hx, hy, hover === "motion" ? 8 : 6.5, 0, 2 * Math.PI);
+  ctx.fillStyle = colors.panel; ctx.fill();
+  ctx.lineWidth = 2; ctx.strokeStyle = colors.a; ctx.stroke();
+  const cast = state.results && state.results.cast;
+  if (!cast) return;
+  if (cast.code === 2) { pill("in contact at the start", tip, colors.a, 0, -22); return; }
+  const v = cast.v;
+  const shift = [v[0] * state.motion[0], v[0] * state.motion[1]];
+  const ghost = worldOutline(s).map(([x, y]) => [x + shift[0], y + shift[1]]);
+  ctx.setLineDash([3, 4]);
+  ctx.strokeStyle = colors.a;
+  ctx.lineWidth = 1.6;
+  pathOf(ghost, s.kind !== KIND.segment);
+  ctx.stroke();
+  ctx.setLineDash([]);
+  arrow([v[4], v[5]], [v[4] + v[2] * 0.8, v[5] + v[3] * 0.8], colors.a, 2, 8);
+  const [px, py] = S([v[4], v[5]]);
+  ctx.beginPath(); ctx.arc(px, py, 4.5, 0, 2 * Math.PI);
+  ctx.fillStyle = colors.a; ctx.fill();
+  pill(`t = ${short(v[0])}`, [s.x + shift[0], s.y + shift[1]], colors.a, 0, -24);
+}
+
 function rotationHandle() {
   const s = state.shapes[state.a];
   const reach = boundingRadius(s) + 22 / view.scale;
@@ -749,6 +832,7 @@ function draw() {
   drawPenetration();
   drawDistance();
   drawRay();
+  drawCast();
   drawRotationHandle();
 }
 
@@ -788,6 +872,7 @@ function pick(p, touch = false) {
   if (near(state.ray.e, reach)) return { what: "ray-e" };
   if (near(state.ray.o, reach)) return { what: "ray-o" };
   if (near(rotationHandle(), reach)) return { what: "rotate", i: state.a };
+  if (near(motionHandle(), reach)) return { what: "motion" };
   const order = [state.a, state.bNow, ...state.shapes.map((_, i) => i).filter((i) => i !== state.a && i !== state.bNow)];
   for (const i of order) {
     const s = state.shapes[i];
@@ -827,6 +912,9 @@ canvas.addEventListener("pointerdown", (ev) => {
   } else if (hit.what === "rotate") {
     const s = state.shapes[hit.i];
     drag = { what: "rotate", i: hit.i, start: Math.atan2(p[1] - s.y, p[0] - s.x), angle: s.angle };
+  } else if (hit.what === "motion") {
+    const h = motionHandle();
+    drag = { what: "motion", dx: h[0] - p[0], dy: h[1] - p[1] };
   } else {
     const h = hit.what === "ray-o" ? state.ray.o : state.ray.e;
     drag = { what: hit.what, dx: h[0] - p[0], dy: h[1] - p[1] };
@@ -854,6 +942,9 @@ canvas.addEventListener("pointermove", (ev) => {
     const s = state.shapes[drag.i];
     const now = Math.atan2(p[1] - s.y, p[0] - s.x);
     s.angle = wrap(drag.angle + now - drag.start);
+  } else if (drag.what === "motion") {
+    const s = state.shapes[state.a];
+    state.motion = [clampX(p[0] + drag.dx) - s.x, clampY(p[1] + drag.dy) - s.y];
   } else {
     const h = drag.what === "ray-o" ? state.ray.o : state.ray.e;
     const other = drag.what === "ray-o" ? state.ray.e : state.ray.o;
@@ -946,6 +1037,7 @@ for (const btn of document.querySelectorAll("#precision button")) {
 $("reset").addEventListener("click", () => {
   state.shapes = initialShapes();
   state.ray = initialRay();
+  state.motion = initialMotion();
   state.a = 1;
   state.b = -1;
   changed();
@@ -964,6 +1056,21 @@ window.gjk = {
   state,
   KIND,
   update() { update(); draw(); },
+  // The cast card as numbers: [shape, 1, fraction, distance, nx, ny, ax, ay,
+  // bx, by, error bound, iterations], [shape, 2, nx, ny, iterations] for a
+  // start in contact, [-1, 0] for none.
+  readCast() {
+    const get = (id) => document.getElementById(id);
+    const num = (id) => Number(get(id).dataset.value);
+    const vec = (id) => [Number(get(id).dataset.x), Number(get(id).dataset.y)];
+    const oc = get("cast-outcome").dataset, code = Number(oc.code), k = Number(oc.shape);
+    if (k < 0) return [-1, 0];
+    if (code === 1) {
+      return [k, 1, num("cast-fraction"), num("cast-dist"), ...vec("cast-normal"), ...vec("cast-point-a"),
+        ...vec("cast-point-b"), num("cast-err"), num("cast-iter")];
+    }
+    return [k, 2, ...vec("cast-normal"), num("cast-iter")];
+  },
   toScreen(p) {
     const rect = canvas.getBoundingClientRect();
     const [x, y] = S(p);
