@@ -661,6 +661,53 @@ macro_rules! cast_suite {
                 assert!(worst.distance <= 8.0 && worst.hits > 0, "{} over {} hits", worst.distance, worst.hits);
             }
 
+            /// A shape of any kind (curved and rounded too) of size `s`.
+            fn any_shape(kind: usize, s: f64, rng: &mut Rng) -> Option<Box<dyn SupportMap<R>>> {
+                let (a, b) = ((s * rng.range(0.2, 1.0)) as R, (s * rng.range(0.01, 1.0)) as R);
+                Some(match kind {
+                    0 => Box::new(Ellipse::new(a, b).ok()?),
+                    1 => Box::new(HalfEllipse::new(a, b).ok()?),
+                    2 => Box::new(Slice::new(a, rng.range(1e-6, 3.1) as R).ok()?),
+                    3 => Box::new(Rounded::new(Rectangle::new(a, b).ok()?, (s * 0.1) as R).ok()?),
+                    4 => Box::new(Circle::new(a).ok()?),
+                    5 => Box::new(Capsule::new(v([0.0, 0.0]), v([a as f64, b as f64]), b).ok()?),
+                    6 => Box::new(Segment::new(v([0.0, 0.0]), v([a as f64, b as f64])).ok()?),
+                    _ => Box::new(Polygon::<R, 16>::new(&ellipse_polygon(rng, 7, a as f64, b as f64).iter().map(|&q| v(q)).collect::<Vec<_>>()).ok()?),
+                })
+            }
+
+            proptest! {
+                #![proptest_config(config())]
+                /// Wild inputs (every kind of shape, sizes from 1e-6 to 1e6,
+                /// far placements, motions from 1e-30 to 1e12 long, along the
+                /// axes or not): the cast ends within its iteration limit with
+                /// finite answers in range, never a panic or NaN.
+                #[test]
+                fn wild_inputs_give_finite_answers(ka in 0usize..8, kb in 0usize..8, seed in any::<u64>(), scale in -6.0f64..6.0, place in -6.0f64..6.0, length in -30.0f64..12.0, axis in any::<bool>()) {
+                    let mut rng = Rng(seed);
+                    let s = 10f64.powf(scale);
+                    let (Some(a), Some(b)) = (any_shape(ka, s, &mut rng), any_shape(kb, s * rng.range(0.1, 10.0), &mut rng)) else { return Ok(()) };
+                    let far = 10f64.powf(place);
+                    let ta = Transform::new(v([far, -far]), rng.range(-4.0, 4.0) as R).unwrap();
+                    let tb = Transform::new(v([far + rng.range(-3.0, 3.0) * s, -far + rng.range(-3.0, 3.0) * s]), rng.range(-4.0, 4.0) as R).unwrap();
+                    let heading = if axis { (rng.next() % 4) as f64 * TAU / 4.0 } else { rng.range(0.0, TAU) };
+                    let len = 10f64.powf(length);
+                    let Ok(motion) = Motion::new(v([len * heading.cos(), len * heading.sin()])) else { return Ok(()) };
+                    let gjk = Gjk::<R>::new();
+                    let c = gjk.cast(&*a, &ta, &*b, &tb, &motion);
+                    prop_assert!(c.iterations <= gjk.config.max_raycast_iterations() + 1 || matches!(c.outcome, CastOutcome::Start(_)), "{c:?}");
+                    match c.outcome {
+                        CastOutcome::Hit(h) => {
+                            let finite = [h.distance, h.fraction, h.error_bound, h.normal.x, h.normal.y, h.point_a.x, h.point_a.y, h.point_b.x, h.point_b.y].iter().all(|x| x.is_finite());
+                            prop_assert!(finite && (0.0..=1.0).contains(&h.fraction) && h.distance >= 0.0 && h.error_bound >= 0.0, "{c:?}");
+                            prop_assert!((h.normal.length() - 1.0).abs() < 1e-3, "{c:?}");
+                        }
+                        CastOutcome::Start(start) => prop_assert!(start.penetration.depth.is_finite() && start.penetration.normal.is_finite(), "{c:?}"),
+                        CastOutcome::Miss => {}
+                    }
+                }
+            }
+
             proptest! {
                 #![proptest_config(config())]
                 #[test]
