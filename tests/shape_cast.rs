@@ -113,6 +113,8 @@ struct Worst {
     hits: usize,
     misses: usize,
     starts: usize,
+    /// The most support evaluations a hit or miss took.
+    iterations: u32,
 }
 
 fn r32(x: f64) -> f64 {
@@ -232,6 +234,9 @@ macro_rules! cast_suite {
                         b.tf
                     )
                 };
+                if !matches!(cast.outcome, CastOutcome::Start(_)) {
+                    worst.iterations = worst.iterations.max(cast.iterations);
+                }
                 if !cast.status.is_converged() {
                     return Err(format!("not converged: {}", ctx()));
                 }
@@ -373,11 +378,12 @@ macro_rules! cast_suite {
                             report.hits += w.hits;
                             report.misses += w.misses;
                             report.starts += w.starts;
+                            report.iterations = report.iterations.max(w.iterations);
                         }
                     }
                     line += &format!(
-                        " worst distance error {:.2} eps (L + t), normal {:.1e}; {} hits, {} misses, {} starts",
-                        report.distance, report.normal, report.hits, report.misses, report.starts
+                        " worst distance error {:.2} eps (L + t), normal {:.1e}; {} hits, {} misses, {} starts; at most {} support evaluations",
+                        report.distance, report.normal, report.hits, report.misses, report.starts, report.iterations
                     );
                     println!("{line}");
                 }
@@ -542,7 +548,7 @@ macro_rules! cast_suite {
                 use gjk2d_oracle::curved::{curved_pair, Local, Placed as Curved};
                 let mut rng = Rng(11);
                 let eps_cfg = GjkConfig::<R>::default().raycast_epsilon() as f64;
-                let mut worst = 0.0f64;
+                let (mut worst, mut most) = (0.0f64, 0);
                 for i in 0..cases(300) {
                     let (w, h) = (r32(rng.range(0.2, 2.0)), r32(rng.range(0.02, 2.0)));
                     let ellipse = Ellipse::<R>::new(w as R, h as R).unwrap();
@@ -582,6 +588,9 @@ macro_rules! cast_suite {
                     let signed = |f: f64| curved_pair(&pa, &at_fraction(f), 1e-15 * reach);
                     let ctx = || format!("ellipse {w}x{h} at {ta:?}, B {local:?} at {tb:?} moving {m:?}: {c:?}");
                     assert!(c.status.is_converged(), "{}", ctx());
+                    if !matches!(c.outcome, CastOutcome::Start(_)) {
+                        most = most.max(c.iterations);
+                    }
                     match c.outcome {
                         CastOutcome::Start(_) => assert!(signed(0.0).signed <= tol, "{}", ctx()),
                         CastOutcome::Miss => {
@@ -598,7 +607,7 @@ macro_rules! cast_suite {
                         }
                     }
                 }
-                println!("{:>6} curved: worst separation at the contact {worst:.1e} L", stringify!($modname));
+                println!("{:>6} curved: worst separation at the contact {worst:.1e} L; at most {most} support evaluations", stringify!($modname));
             }
 
             /// Shapes of types known when the program is compiled (where the
