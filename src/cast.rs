@@ -17,8 +17,8 @@
 use crate::error::Error;
 use crate::minkowski::{MinkowskiVertex, Pair, NO_ID};
 use crate::real::{Real, V2};
-use crate::result::{Penetration, Status};
-use crate::shape::SupportMap;
+use crate::result::{Penetration, RayOutcome, Status};
+use crate::shape::{cast_ray_disk, SupportMap};
 use crate::transform::check_point;
 
 /// B's translation over the cast, relative to A: validated once, so the
@@ -311,21 +311,13 @@ fn entry<R: Real>(l: Corner<R>, r: Corner<R>, radius: R, u: V2<R>) -> Option<Ent
     }
 }
 
-/// The ray's entry into the disk of `radius` around `c`, in the form
-/// without cancellation (as the disk's own ray cast).
+/// The ray's entry into the disk of `radius` around `c`: the disk's own
+/// closed-form cast, from the origin.
 fn disk_entry<R: Real>(c: V2<R>, radius: R, u: V2<R>, left: R) -> Option<Entry<R>> {
-    let m = -c;
-    let outside = m.length_squared() - radius * radius;
-    let b = m.dot(u);
-    let across = u.cross(m);
-    let p = across.abs();
-    if outside <= R::ZERO || b >= R::ZERO || p > radius {
-        return None;
+    match cast_ray_disk(c, radius, V2::zero(), u, R::INFINITY).outcome {
+        RayOutcome::Hit(hit) => Some(Entry { s: hit.distance, normal: V2::from_glam(hit.normal), left }),
+        _ => None,
     }
-    let half_chord = ((radius - p) * (radius + p)).sqrt();
-    let s = outside / (-b + half_chord);
-    let normal = (u * -half_chord + u.perp() * across) * (R::ONE / radius);
-    Some(Entry { s, normal, left })
 }
 
 /// The cast distance's error bound: the iteration's gap and rounding at the

@@ -39,6 +39,7 @@ mod slice;
 mod triangle;
 
 pub use capsule::Capsule;
+pub(crate) use circle::cast_ray_disk;
 pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use half_ellipse::HalfEllipse;
