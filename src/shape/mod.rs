@@ -38,6 +38,7 @@ mod segment;
 mod slice;
 mod triangle;
 
+pub(crate) use capsule::cast_ray_capsule;
 pub use capsule::Capsule;
 pub(crate) use circle::cast_ray_disk;
 pub use circle::Circle;
