@@ -6,6 +6,7 @@
 //! ```text
 //! cargo bench --bench queries                 # every family, f32 and f64
 //! cargo bench --bench queries -- poly8 ray    # families whose name contains a word
+//! cargo bench --bench queries -- cast         # the linear casts against parry's cast_shapes
 //! GJK2D_BENCH_PASSES=31 cargo bench --bench queries
 //! ```
 //!
@@ -17,7 +18,7 @@
 //! transforms held as data (as a scene's are, not constants to fold); inputs
 //! are f32 values, so both precisions see the same geometry.
 
-use gjk2d::{Capsule, Circle, Gjk, Polygon, Ray, Real, SupportMap, Transform};
+use gjk2d::{Capsule, Circle, Gjk, Motion, Polygon, Ray, Real, SupportMap, Transform};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -139,6 +140,25 @@ fn rays(seed: u64, count: usize, mk: &Maker) -> Vec<RayCase> {
         .collect()
 }
 
+/// Linear casts: B's center 1 to 3 of their size from A's, moving by a
+/// motion aimed within 1 of A's center that reaches 0.5 to 1.5 of the way
+/// there (hits, misses, and a few pairs overlapping at the start).
+type CastCase = (Sh, Sh, [f64; 2]);
+
+fn casts(seed: u64, count: usize, mk_a: &Maker, mk_b: &Maker) -> Vec<CastCase> {
+    let mut rng = Rng(seed);
+    (0..count)
+        .map(|_| {
+            let a = mk_a(&mut rng, [0.0, 0.0]);
+            let (d, t) = (rng.range(1.0, 3.0), rng.range(0.0, 6.3));
+            let c = [d * t.cos(), d * t.sin()];
+            let b = mk_b(&mut rng, c);
+            let (aim, k) = ([rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)], rng.range(0.5, 1.5));
+            (a, b, [r32((aim[0] - c[0]) * k), r32((aim[1] - c[1]) * k)])
+        })
+        .collect()
+}
+
 // --- gjk2d -----------------------------------------------------------------------
 
 /// The polygon boxed, as parry's shapes are (`Box<dyn Shape>`): a scene's
@@ -210,6 +230,15 @@ fn g_rays<R: Real, const N: usize>(batch: &[(Ray<R>, R, G<R, N>)]) {
     }
 }
 
+fn g_casts<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>, Motion<R>)]) {
+    let gjk = Gjk::<R>::new();
+    let id = Transform::<R>::IDENTITY;
+    for (a, b, m) in batch {
+        let (a, b) = (black_box(a), black_box(b));
+        black_box(with_g!(a, |x| with_g!(b, |y| gjk.cast(x, &id, y, &id, m))));
+    }
+}
+
 // --- parry -----------------------------------------------------------------------
 
 macro_rules! parry_side {
@@ -218,7 +247,7 @@ macro_rules! parry_side {
             use super::{Query, Sh};
             use std::hint::black_box;
             use $p::math::{Pose, Vector};
-            use $p::query::{self, Ray};
+            use $p::query::{self, Ray, ShapeCastOptions};
             use $p::shape::{Ball, Capsule, ConvexPolygon, Shape};
 
             pub struct PS(Box<dyn Shape>, Pose);
@@ -257,6 +286,19 @@ macro_rules! parry_side {
                             let _ = black_box(query::contact(&a.1, &*a.0, &b.1, &*b.0, 0.0));
                         }
                     }
+                }
+            }
+
+            pub fn motion(m: &[f64; 2]) -> Vector {
+                v(m)
+            }
+
+            /// B moving by its motion against A, fixed, up to the whole motion.
+            pub fn casts(batch: &[(PS, PS, Vector)]) {
+                for (a, b, m) in batch {
+                    let (a, b) = (black_box(a), black_box(b));
+                    let options = ShapeCastOptions::with_max_time_of_impact(1.0);
+                    let _ = black_box(query::cast_shapes(&a.1, Vector::ZERO, &*a.0, &b.1, *m, &*b.0, options));
                 }
             }
 
@@ -343,16 +385,7 @@ fn pair_family<const N: usize>(name: &str, cases: &[(Sh, Sh)], passes: usize, ro
                 parry64::pairs(&p64, q)
             }],
         );
-        let row = Row {
-            family: name.to_string(),
-            query: qn,
-            cells: [
-                (median(t[0].clone()), median(t[1].clone()), ratio(&t[0], &t[1])),
-                (median(t[2].clone()), median(t[3].clone()), ratio(&t[2], &t[3])),
-            ],
-        };
-        print_row(&row);
-        rows.push(row);
+        push_row(rows, name, qn, &t);
     }
 }
 
@@ -370,9 +403,34 @@ fn ray_family<const N: usize>(name: &str, cases: &[RayCase], passes: usize, rows
         cases.len(),
         &mut [&mut || g_rays(&g32), &mut || parry32::rays(&p32), &mut || g_rays(&g64), &mut || parry64::rays(&p64)],
     );
+    push_row(rows, name, "raycast", &t);
+}
+
+fn cast_family<const N: usize>(name: &str, cases: &[CastCase], passes: usize, rows: &mut Vec<Row>) {
+    fn gc<R: Real, const N: usize>(b: &[CastCase]) -> Vec<(G<R, N>, G<R, N>, Motion<R>)> {
+        let v = |p: &[f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
+        b.iter().map(|(a, b, m)| (g(a), g(b), Motion::new(v(m)).unwrap())).collect()
+    }
+    let g32 = gc::<f32, N>(cases);
+    let g64 = gc::<f64, N>(cases);
+    let p32: Vec<_> =
+        cases.iter().map(|(a, b, m)| (parry32::build(a), parry32::build(b), parry32::motion(m))).collect();
+    let p64: Vec<_> =
+        cases.iter().map(|(a, b, m)| (parry64::build(a), parry64::build(b), parry64::motion(m))).collect();
+    let t = time_passes(
+        passes,
+        cases.len(),
+        &mut [&mut || g_casts(&g32), &mut || parry32::casts(&p32), &mut || g_casts(&g64), &mut || parry64::casts(&p64)],
+    );
+    push_row(rows, name, "cast", &t);
+}
+
+/// A family's row from its contenders' times (gjk2d f32, parry f32, gjk2d
+/// f64, parry f64), printed and kept for the summary.
+fn push_row(rows: &mut Vec<Row>, name: &str, query: &'static str, t: &[Vec<f64>]) {
     let row = Row {
         family: name.to_string(),
-        query: "raycast",
+        query,
         cells: [
             (median(t[0].clone()), median(t[1].clone()), ratio(&t[0], &t[1])),
             (median(t[2].clone()), median(t[3].clone()), ratio(&t[2], &t[3])),
@@ -426,6 +484,15 @@ fn main() {
     }
     if wanted("ray_poly1024") {
         ray_family::<1024>("ray_poly1024", &rays(9, CASES, &p1024), passes, &mut rows);
+    }
+    if wanted("cast_poly8") {
+        cast_family::<8>("cast_poly8", &casts(12, CASES, &p8, &p8), passes, &mut rows);
+    }
+    if wanted("cast_circle_poly8") {
+        cast_family::<8>("cast_circle_poly8", &casts(13, CASES, &circle, &p8), passes, &mut rows);
+    }
+    if wanted("cast_capsule_poly8") {
+        cast_family::<8>("cast_capsule_poly8", &casts(14, CASES, &capsule, &p8), passes, &mut rows);
     }
     let slower: Vec<String> = rows
         .iter()

@@ -17,8 +17,8 @@
 use crate::error::Error;
 use crate::minkowski::{MinkowskiVertex, Pair, NO_ID};
 use crate::real::{Real, V2};
-use crate::result::{Penetration, Status};
-use crate::shape::SupportMap;
+use crate::result::{Penetration, RayOutcome, Status};
+use crate::shape::{cast_ray_capsule, cast_ray_disk, SupportMap};
 use crate::transform::check_point;
 
 /// B's translation over the cast, relative to A: validated once, so the
@@ -277,55 +277,31 @@ fn chord_entry<R: Real>(l: V2<R>, r: V2<R>, u: V2<R>) -> Entry<R> {
 }
 
 /// The ray's entry into the chord's core feature (the segment between its
-/// core points, or the one point) swept by `radius`, in closed form: the
-/// side line where the ray comes in over the segment, else an end's disk.
-/// `None` where it would not enter (rounding at a grazing ray), and the
-/// chord stands in.
+/// core points, or the one point) swept by `radius`: the capsule's or the
+/// disk's own closed-form cast, from the origin. `None` where it would not
+/// enter (rounding at a grazing ray), and the chord stands in.
 fn entry<R: Real>(l: Corner<R>, r: Corner<R>, radius: R, u: V2<R>) -> Option<Entry<R>> {
     if radius == R::ZERO {
         return Some(chord_entry(l.w, r.w, u));
     }
     let e = l.core - r.core;
-    let Some((len, axis)) = e.try_length_and_unit().filter(|_| l.id != r.id || l.id == NO_ID) else {
-        return disk_entry(l.core, radius, u, R::ONE);
-    };
-    // The side facing the ray's origin, and the origin's height over it.
-    let side = axis.perp();
-    let h = -side.dot(r.core);
-    let mut along = -axis.dot(r.core);
-    if h > radius {
-        let dn = side.dot(u);
-        if dn >= R::ZERO {
-            return None;
-        }
-        let s = (h - radius) / -dn;
-        along = axis.dot(u * s - r.core);
-        if along >= R::ZERO && along <= len {
-            return Some(Entry { s, normal: side, left: along / len });
-        }
-    }
-    if along < R::ZERO {
-        disk_entry(r.core, radius, u, R::ZERO)
+    let one_point = (l.id == r.id && l.id != NO_ID) || e.max_abs() == R::ZERO;
+    let cast = if one_point {
+        cast_ray_disk(l.core, radius, V2::zero(), u, R::INFINITY)
     } else {
-        disk_entry(l.core, radius, u, R::ONE)
-    }
-}
-
-/// The ray's entry into the disk of `radius` around `c`, in the form
-/// without cancellation (as the disk's own ray cast).
-fn disk_entry<R: Real>(c: V2<R>, radius: R, u: V2<R>, left: R) -> Option<Entry<R>> {
-    let m = -c;
-    let outside = m.length_squared() - radius * radius;
-    let b = m.dot(u);
-    let across = u.cross(m);
-    let p = across.abs();
-    if outside <= R::ZERO || b >= R::ZERO || p > radius {
+        cast_ray_capsule(r.core, e, radius, V2::zero(), u, R::INFINITY)
+    };
+    let RayOutcome::Hit(hit) = cast.outcome else {
         return None;
-    }
-    let half_chord = ((radius - p) * (radius + p)).sqrt();
-    let s = outside / (-b + half_chord);
-    let normal = (u * -half_chord + u.perp() * across) * (R::ONE / radius);
-    Some(Entry { s, normal, left })
+    };
+    // The core point touched, as a weight of the chord's ends: the hit's
+    // foot on the segment (an end for a hit on its disk).
+    let left = if one_point {
+        R::ONE
+    } else {
+        ((u * hit.distance - r.core).dot(e) / e.length_squared()).max(R::ZERO).min(R::ONE)
+    };
+    Some(Entry { s: hit.distance, normal: V2::from_glam(hit.normal), left })
 }
 
 /// The cast distance's error bound: the iteration's gap and rounding at the

@@ -9,8 +9,8 @@ use crate::shape::{
     Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
 };
 use crate::{
-    Detection, EpaConfig, GjkConfig, Penetration, PenetrationEstimate, Ray, RayCast, RayHit, RayOutcome, Separation,
-    SupportPoint, Transform,
+    CastHit, CastOutcome, CastStart, Detection, EpaConfig, GjkConfig, Motion, Penetration, PenetrationEstimate, Ray,
+    RayCast, RayHit, RayOutcome, Separation, ShapeCast, SupportPoint, Transform,
 };
 
 /// A glam vector as `(x, y)`.
@@ -107,6 +107,49 @@ impl<R: Real + Format> Format for RayOutcome<R> {
 impl<R: Real + Format> Format for RayCast<R> {
     fn format(&self, f: Formatter<'_>) {
         write!(f, "RayCast {{ outcome: {}, iterations: {}, status: {} }}", self.outcome, self.iterations, self.status)
+    }
+}
+
+impl<R: Real + Format> Format for Motion<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "Motion {{ translation: {} }}", xy::<R>(self.translation()))
+    }
+}
+
+impl<R: Real + Format> Format for CastHit<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "CastHit {{ fraction: {}, distance: {}, normal: {}, point_a: {}, point_b: {}, error_bound: {} }}",
+            self.fraction,
+            self.distance,
+            xy::<R>(self.normal),
+            xy::<R>(self.point_a),
+            xy::<R>(self.point_b),
+            self.error_bound
+        )
+    }
+}
+
+impl<R: Real + Format> Format for CastStart<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "CastStart {{ penetration: {}, separating: {} }}", self.penetration, self.separating)
+    }
+}
+
+impl<R: Real + Format> Format for CastOutcome<R> {
+    fn format(&self, f: Formatter<'_>) {
+        match self {
+            CastOutcome::Hit(h) => write!(f, "Hit({})", h),
+            CastOutcome::Miss => write!(f, "Miss"),
+            CastOutcome::Start(s) => write!(f, "Start({})", s),
+        }
+    }
+}
+
+impl<R: Real + Format> Format for ShapeCast<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "ShapeCast {{ outcome: {}, iterations: {}, status: {} }}", self.outcome, self.iterations, self.status)
     }
 }
 

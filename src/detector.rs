@@ -301,13 +301,16 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        if let Some(penetration) = self.penetration(a, ta, b, tb) {
-            let separating = V2::from_glam(penetration.normal).dot(motion.translation) > R::ZERO;
-            return ShapeCast {
-                outcome: CastOutcome::Start(CastStart { penetration, separating }),
-                iterations: penetration.iterations,
-                status: penetration.status,
-            };
+        // The cheap test first: most casts start apart, and it proves it.
+        if self.intersects(a, ta, b, tb).intersecting {
+            if let Some(penetration) = self.penetration(a, ta, b, tb) {
+                let separating = V2::from_glam(penetration.normal).dot(motion.translation) > R::ZERO;
+                return ShapeCast {
+                    outcome: CastOutcome::Start(CastStart { penetration, separating }),
+                    iterations: penetration.iterations,
+                    status: penetration.status,
+                };
+            }
         }
         let pair = Pair::new(a, ta, b, tb);
         cast_pair(

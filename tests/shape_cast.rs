@@ -113,6 +113,8 @@ struct Worst {
     hits: usize,
     misses: usize,
     starts: usize,
+    /// The most support evaluations a hit or miss took.
+    iterations: u32,
 }
 
 fn r32(x: f64) -> f64 {
@@ -232,6 +234,9 @@ macro_rules! cast_suite {
                         b.tf
                     )
                 };
+                if !matches!(cast.outcome, CastOutcome::Start(_)) {
+                    worst.iterations = worst.iterations.max(cast.iterations);
+                }
                 if !cast.status.is_converged() {
                     return Err(format!("not converged: {}", ctx()));
                 }
@@ -373,11 +378,12 @@ macro_rules! cast_suite {
                             report.hits += w.hits;
                             report.misses += w.misses;
                             report.starts += w.starts;
+                            report.iterations = report.iterations.max(w.iterations);
                         }
                     }
                     line += &format!(
-                        " worst distance error {:.2} eps (L + t), normal {:.1e}; {} hits, {} misses, {} starts",
-                        report.distance, report.normal, report.hits, report.misses, report.starts
+                        " worst distance error {:.2} eps (L + t), normal {:.1e}; {} hits, {} misses, {} starts; at most {} support evaluations",
+                        report.distance, report.normal, report.hits, report.misses, report.starts, report.iterations
                     );
                     println!("{line}");
                 }
@@ -542,7 +548,7 @@ macro_rules! cast_suite {
                 use gjk2d_oracle::curved::{curved_pair, Local, Placed as Curved};
                 let mut rng = Rng(11);
                 let eps_cfg = GjkConfig::<R>::default().raycast_epsilon() as f64;
-                let mut worst = 0.0f64;
+                let (mut worst, mut most) = (0.0f64, 0);
                 for i in 0..cases(300) {
                     let (w, h) = (r32(rng.range(0.2, 2.0)), r32(rng.range(0.02, 2.0)));
                     let ellipse = Ellipse::<R>::new(w as R, h as R).unwrap();
@@ -582,6 +588,9 @@ macro_rules! cast_suite {
                     let signed = |f: f64| curved_pair(&pa, &at_fraction(f), 1e-15 * reach);
                     let ctx = || format!("ellipse {w}x{h} at {ta:?}, B {local:?} at {tb:?} moving {m:?}: {c:?}");
                     assert!(c.status.is_converged(), "{}", ctx());
+                    if !matches!(c.outcome, CastOutcome::Start(_)) {
+                        most = most.max(c.iterations);
+                    }
                     match c.outcome {
                         CastOutcome::Start(_) => assert!(signed(0.0).signed <= tol, "{}", ctx()),
                         CastOutcome::Miss => {
@@ -598,7 +607,7 @@ macro_rules! cast_suite {
                         }
                     }
                 }
-                println!("{:>6} curved: worst separation at the contact {worst:.1e} L", stringify!($modname));
+                println!("{:>6} curved: worst separation at the contact {worst:.1e} L; at most {most} support evaluations", stringify!($modname));
             }
 
             /// Shapes of types known when the program is compiled (where the
@@ -659,6 +668,53 @@ macro_rules! cast_suite {
                     }
                 }
                 assert!(worst.distance <= 8.0 && worst.hits > 0, "{} over {} hits", worst.distance, worst.hits);
+            }
+
+            /// A shape of any kind (curved and rounded too) of size `s`.
+            fn any_shape(kind: usize, s: f64, rng: &mut Rng) -> Option<Box<dyn SupportMap<R>>> {
+                let (a, b) = ((s * rng.range(0.2, 1.0)) as R, (s * rng.range(0.01, 1.0)) as R);
+                Some(match kind {
+                    0 => Box::new(Ellipse::new(a, b).ok()?),
+                    1 => Box::new(HalfEllipse::new(a, b).ok()?),
+                    2 => Box::new(Slice::new(a, rng.range(1e-6, 3.1) as R).ok()?),
+                    3 => Box::new(Rounded::new(Rectangle::new(a, b).ok()?, (s * 0.1) as R).ok()?),
+                    4 => Box::new(Circle::new(a).ok()?),
+                    5 => Box::new(Capsule::new(v([0.0, 0.0]), v([a as f64, b as f64]), b).ok()?),
+                    6 => Box::new(Segment::new(v([0.0, 0.0]), v([a as f64, b as f64])).ok()?),
+                    _ => Box::new(Polygon::<R, 16>::new(&ellipse_polygon(rng, 7, a as f64, b as f64).iter().map(|&q| v(q)).collect::<Vec<_>>()).ok()?),
+                })
+            }
+
+            proptest! {
+                #![proptest_config(config())]
+                /// Wild inputs (every kind of shape, sizes from 1e-6 to 1e6,
+                /// far placements, motions from 1e-30 to 1e12 long, along the
+                /// axes or not): the cast ends within its iteration limit with
+                /// finite answers in range, never a panic or NaN.
+                #[test]
+                fn wild_inputs_give_finite_answers(ka in 0usize..8, kb in 0usize..8, seed in any::<u64>(), scale in -6.0f64..6.0, place in -6.0f64..6.0, length in -30.0f64..12.0, axis in any::<bool>()) {
+                    let mut rng = Rng(seed);
+                    let s = 10f64.powf(scale);
+                    let (Some(a), Some(b)) = (any_shape(ka, s, &mut rng), any_shape(kb, s * rng.range(0.1, 10.0), &mut rng)) else { return Ok(()) };
+                    let far = 10f64.powf(place);
+                    let ta = Transform::new(v([far, -far]), rng.range(-4.0, 4.0) as R).unwrap();
+                    let tb = Transform::new(v([far + rng.range(-3.0, 3.0) * s, -far + rng.range(-3.0, 3.0) * s]), rng.range(-4.0, 4.0) as R).unwrap();
+                    let heading = if axis { (rng.next() % 4) as f64 * TAU / 4.0 } else { rng.range(0.0, TAU) };
+                    let len = 10f64.powf(length);
+                    let Ok(motion) = Motion::new(v([len * heading.cos(), len * heading.sin()])) else { return Ok(()) };
+                    let gjk = Gjk::<R>::new();
+                    let c = gjk.cast(&*a, &ta, &*b, &tb, &motion);
+                    prop_assert!(c.iterations <= gjk.config.max_raycast_iterations() + 1 || matches!(c.outcome, CastOutcome::Start(_)), "{c:?}");
+                    match c.outcome {
+                        CastOutcome::Hit(h) => {
+                            let finite = [h.distance, h.fraction, h.error_bound, h.normal.x, h.normal.y, h.point_a.x, h.point_a.y, h.point_b.x, h.point_b.y].iter().all(|x| x.is_finite());
+                            prop_assert!(finite && (0.0..=1.0).contains(&h.fraction) && h.distance >= 0.0 && h.error_bound >= 0.0, "{c:?}");
+                            prop_assert!((h.normal.length() - 1.0).abs() < 1e-3, "{c:?}");
+                        }
+                        CastOutcome::Start(start) => prop_assert!(start.penetration.depth.is_finite() && start.penetration.normal.is_finite(), "{c:?}"),
+                        CastOutcome::Miss => {}
+                    }
+                }
             }
 
             proptest! {

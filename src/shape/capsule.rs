@@ -103,7 +103,7 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
 /// that end's disk: one disk cast, not a comparison of three hits. A bare
 /// segment has its own cast (in `segment.rs`), so a firmware with capsules
 /// links no segment cast.
-fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let len2 = delta.length_squared();
     let rel = o - a;
     // Closest point of the core to the ray origin decides "inside".

@@ -106,7 +106,7 @@ impl<R: Real> SupportMap<R> for Circle<R> {
 /// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
 /// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
 #[cfg_attr(not(target_os = "none"), inline)]
-pub(super) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
+pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let m = o - center;
     // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
     // too), without a square root.

@@ -38,7 +38,9 @@ mod segment;
 mod slice;
 mod triangle;
 
+pub(crate) use capsule::cast_ray_capsule;
 pub use capsule::Capsule;
+pub(crate) use circle::cast_ray_disk;
 pub use circle::Circle;
 pub use ellipse::Ellipse;
 pub use half_ellipse::HalfEllipse;

@@ -1,8 +1,8 @@
 // The body of the fuzz target, shared by `fuzz/fuzz_targets/queries.rs`
 // (libFuzzer, `cargo fuzz run queries`) and `tests/fuzz_smoke.rs` (stable,
 // random bytes, run by `cargo test`). Any input: constructors may refuse it
-// with an error but never panic; every query on what they accept terminates
-// and gives finite output.
+// with an error but never panic; every query on what they accept (the linear
+// cast too) terminates and gives finite output.
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
@@ -89,6 +89,19 @@ macro_rules! fuzz_precision {
                                 assert!(x.is_finite(), "non-finite ray hit {cast:?}");
                             }
                         }
+                    }
+                }
+            }
+            // Last, so every earlier query reads the values it always read
+            // (the kept crashes replay as they were found).
+            if let (Some(a), Some(b), Some(ta), Some(tb)) = (shapes.first(), shapes.get(1), transforms.first(), transforms.get(1)) {
+                if let Ok(motion) = Motion::new($vec::new(next(), next())) {
+                    let cast = gjk.cast(&**a, ta, &**b, tb, &motion);
+                    if let Some(h) = cast.hit() {
+                        for x in [h.distance, h.fraction, h.error_bound, h.normal.x, h.normal.y, h.point_a.x, h.point_b.y] {
+                            assert!(x.is_finite(), "non-finite cast hit {cast:?}");
+                        }
+                        assert!((0.0..=1.0).contains(&h.fraction));
                     }
                 }
             }
