@@ -139,7 +139,9 @@ struct Entry<R> {
 /// The linear cast of the placed pair, B moving by `motion` (in the pair's
 /// frame), with the cores' support; the caller has ruled out an overlap at
 /// the start. `max_iterations` and `epsilon` bound the refinement on curved
-/// cores (relative to the pair's size), as they do the GJK ray cast.
+/// cores (relative to the pair's size), as they do the GJK ray cast. Out
+/// of line on bare metal, for the stack (see `Gjk::cast`).
+#[cfg_attr(target_os = "none", inline(never))]
 pub(crate) fn cast_pair<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     motion: V2<R>,

@@ -301,16 +301,13 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        // The cheap test first: most casts start apart, and it proves it.
-        if self.intersects(a, ta, b, tb).intersecting {
-            if let Some(penetration) = self.penetration(a, ta, b, tb) {
-                let separating = V2::from_glam(penetration.normal).dot(motion.translation) > R::ZERO;
-                return ShapeCast {
-                    outcome: CastOutcome::Start(CastStart { penetration, separating }),
-                    iterations: penetration.iterations,
-                    status: penetration.status,
-                };
-            }
+        if let Some(penetration) = self.start_penetration(a, ta, b, tb) {
+            let separating = V2::from_glam(penetration.normal).dot(motion.translation) > R::ZERO;
+            return ShapeCast {
+                outcome: CastOutcome::Start(CastStart { penetration, separating }),
+                iterations: penetration.iterations,
+                status: penetration.status,
+            };
         }
         let pair = Pair::new(a, ta, b, tb);
         cast_pair(
@@ -319,6 +316,27 @@ impl<R: Real, P> Gjk<R, P> {
             self.config.max_raycast_iterations(),
             self.config.raycast_epsilon(),
         )
+    }
+}
+
+impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
+    /// The cast's check for a start in contact: the cheap intersection test
+    /// first (most casts start apart, and it proves it), the penetration
+    /// only where they touch. In a frame of its own on bare metal, so that
+    /// EPA's polytope and the cast's corners are never on the stack
+    /// together (the cast's peak is then the larger of the two, not their
+    /// sum).
+    #[cfg_attr(target_os = "none", inline(never))]
+    fn start_penetration<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        if self.intersects(a, ta, b, tb).intersecting {
+            self.penetration(a, ta, b, tb)
+        } else {
+            None
+        }
     }
 }
 

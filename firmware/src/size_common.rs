@@ -8,8 +8,8 @@
 use core::panic::PanicInfo;
 use core::ptr::{addr_of, addr_of_mut, read_volatile, write_volatile};
 use gjk2d::{
-    Capsule, Circle, Ellipse, Gjk, HalfEllipse, Polygon, Ray, RayOutcome, Real, Rectangle, Rounded, Segment, Slice,
-    SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real, Rectangle,
+    Rounded, Segment, Slice, SupportMap, Transform, Triangle,
 };
 
 /// The runtime's entry attribute: the same firmwares build for Cortex-M and
@@ -212,6 +212,35 @@ pub fn raycast<R: Io, S: SupportMap<R> + ?Sized>(gjk: &Gjk<R>, shape: &S, t: &Tr
             }
             RayOutcome::Miss => sink_u32(1),
             RayOutcome::Inside => sink_u32(2),
+        }
+        sink_u32(cast.iterations | (cast.status as u32) << 16);
+    }
+}
+
+/// B moving by the ray's direction (inputs 22 and 23) against A: the
+/// linear shape cast, with what it reports at a start in contact.
+pub fn cast<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    if let Ok(motion) = Motion::new(vec::<R>(22)) {
+        let cast = gjk.cast(a, &Transform::IDENTITY, b, tb, &motion);
+        match cast.outcome {
+            CastOutcome::Hit(h) => {
+                h.fraction.sink();
+                sink_v::<R>(h.normal);
+                sink_v::<R>(h.point_a);
+                sink_v::<R>(h.point_b);
+                h.error_bound.sink();
+            }
+            CastOutcome::Start(s) => {
+                s.penetration.depth.sink();
+                sink_v::<R>(s.penetration.normal);
+                sink_u32(s.separating as u32);
+            }
+            CastOutcome::Miss => sink_u32(1),
         }
         sink_u32(cast.iterations | (cast.status as u32) << 16);
     }

@@ -7,7 +7,11 @@
 #![no_main]
 
 use core::hint::black_box as bb;
-use gjk2d::{Capsule, Circle, Ellipse, Epa, Gjk, GjkConfig, Polygon, Ray, Real, Transform};
+use gjk2d::{Capsule, Ellipse, Gjk, Polygon, Real, Transform};
+#[cfg(not(feature = "measure-cast"))]
+use gjk2d::{Circle, Epa, GjkConfig, Ray};
+#[cfg(feature = "measure-cast")]
+use gjk2d::{Motion, ShapeCast};
 use gjk2d_firmware::{debug, entry, hprintln, meter};
 #[cfg(target_arch = "arm")]
 use panic_semihosting as _;
@@ -26,6 +30,7 @@ fn v<R: Real>(x: f64, y: f64) -> R::Vector {
     R::vector(R::from_f64(x), R::from_f64(y))
 }
 
+#[cfg(not(feature = "measure-cast"))]
 fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     let gjk = Gjk::<R>::new();
     let sq = [v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)];
@@ -112,7 +117,6 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     report(ctx, p, "raycast ellipse (GJK ray cast)", gjk.raycast(&ray, R::ZERO, &ea, &e_apart).iterations, &|| {
         bb(gjk.raycast(bb(&ray), R::ZERO, bb(&ea), bb(&e_apart)));
     });
-
     // EPA's capacity N (polytope vertices on the stack).
     macro_rules! epa_n {
         ($n:literal) => {{
@@ -133,6 +137,35 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     epa_n!(16);
     epa_n!(32);
     epa_n!(64);
+    Some(())
+}
+
+/// The shape cast's rows alone (`--features measure-cast`): B moving
+/// towards A until they touch (a start in contact would measure the
+/// penetration query instead).
+#[cfg(feature = "measure-cast")]
+fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
+    let gjk = Gjk::<R>::new();
+    let sq = [v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)];
+    let a = Polygon::<R, 8>::new(&sq).ok()?;
+    let b = Polygon::<R, 8>::regular(6, R::from_f64(0.6)).ok()?;
+    let ta = Transform::<R>::IDENTITY;
+    let apart = Transform::<R>::new(v::<R>(2.2, 0.7), R::from_f64(0.3)).ok()?;
+    let capsule = Capsule::<R>::new(v::<R>(-0.5, 0.0), v::<R>(0.5, 0.0), R::from_f64(0.25)).ok()?;
+    let ea = Ellipse::<R>::new(R::from_f64(4.0), R::from_f64(2.0)).ok()?;
+    let eb = Ellipse::<R>::new(R::from_f64(2.0), R::from_f64(3.0)).ok()?;
+    let e_apart = Transform::<R>::new(v::<R>(3.6, 0.9), R::from_f64(0.4)).ok()?;
+    let towards = Motion::<R>::new(v::<R>(-1.6, -0.4)).ok()?;
+    let cast_iterations = |c: ShapeCast<R>| if c.hit().is_some() { c.iterations } else { 0 };
+    report(ctx, p, "cast polygon4-hexagon", cast_iterations(gjk.cast(&a, &ta, &b, &apart, &towards)), &|| {
+        bb(gjk.cast(bb(&a), bb(&ta), bb(&b), bb(&apart), bb(&towards)));
+    });
+    report(ctx, p, "cast capsule-polygon4", cast_iterations(gjk.cast(&a, &ta, &capsule, &apart, &towards)), &|| {
+        bb(gjk.cast(bb(&a), bb(&ta), bb(&capsule), bb(&apart), bb(&towards)));
+    });
+    report(ctx, p, "cast ellipse-ellipse", cast_iterations(gjk.cast(&ea, &ta, &eb, &e_apart, &towards)), &|| {
+        bb(gjk.cast(bb(&ea), bb(&ta), bb(&eb), bb(&e_apart), bb(&towards)));
+    });
     Some(())
 }
 
