@@ -1,0 +1,248 @@
+//! Contact manifolds: the points at which a pair touches, overlaps, or
+//! comes within a margin of touching, for a physics step's contact solver.
+//!
+//! Given the normal `n` (from A towards B) of the distance or penetration
+//! query, each shape offers the part of its boundary that faces the other
+//! ([`Side`]): a face (an edge of the core, moved out by the radius) where
+//! the core is a polytope and one of its edges at the support vertex faces
+//! `n` closely enough, else the single support point. Seen along `n`, both
+//! parts cover an interval of the tangent line; the contact points are the
+//! ends of the two intervals' overlap, each paired with the other shape's
+//! boundary straight across along `n`.
+//!
+//! This is reference-face clipping (Box2D's `b2CollidePolygons`) with the
+//! clip lines at right angles to `n` instead of to one of the faces: no face
+//! has to be chosen as the reference (nor kept chosen for the ids to stay),
+//! every point lies on both boundaries, and the closest (or deepest) pair of
+//! points, which lies in both faces, is always within the overlap, so the
+//! least separation is the query's.
+//!
+//! All in the pair frame (A's frame, relative to its reference point), as
+//! every query works: shapes far from the origin keep their precision.
+
+use crate::minkowski::Pair;
+use crate::real::{Real, V2};
+use crate::result::{ContactPoint, Feature, FeatureId, Manifold};
+use crate::shape::{SupportMap, NO_FEATURE};
+
+/// Steps of the search for a vertex's neighbour, at most. Each step finds a
+/// vertex between the two it has, usually halfway, so a polygon of any size
+/// needs far fewer; the bound stops a support function whose answers do not
+/// agree with each other.
+const MAX_STEPS: u32 = 64;
+
+/// A support id as a vertex; ids that do not fit 16 bits (a point on a
+/// curve) as the curve.
+fn vertex(id: u32) -> Feature {
+    if id < 0xFFFF {
+        Feature::Vertex(id as u16)
+    } else {
+        Feature::Curve
+    }
+}
+
+fn edge(start: u32) -> Feature {
+    if start < 0xFFFF {
+        Feature::Edge(start as u16)
+    } else {
+        Feature::Curve
+    }
+}
+
+/// An edge of a core at its support vertex.
+#[derive(Clone, Copy)]
+struct Face<R> {
+    /// The edge's other vertex, and its id.
+    other: V2<R>,
+    other_id: Feature,
+    /// Unit outward normal.
+    normal: V2<R>,
+    id: Feature,
+}
+
+/// One end of a side's interval along the tangent: a point on the shape's
+/// boundary, and the feature it belongs to.
+#[derive(Clone, Copy)]
+struct End<R> {
+    point: V2<R>,
+    id: Feature,
+}
+
+/// The part of a shape's boundary that faces the other shape.
+struct Side<R> {
+    /// Unit direction towards the other shape: `n` for A, `-n` for B.
+    facing: V2<R>,
+    radius: R,
+    /// The core's support point along `facing`.
+    support: V2<R>,
+    support_id: Feature,
+    face: Option<Face<R>>,
+}
+
+impl<R: Real> Side<R> {
+    /// The side of a shape given by its support function: the edge at the
+    /// support vertex whose normal is nearest `facing`, if within 60
+    /// degrees of it (a steeper edge is only met at its corner, which is
+    /// then the one point), for polytope cores.
+    fn new(support: impl Fn(V2<R>) -> (V2<R>, u32), facing: V2<R>, radius: R, polytope: bool) -> Self {
+        let (v, id) = support(facing);
+        let mut side = Self { facing, radius, support: v, support_id: vertex(id), face: None };
+        if !polytope || id == NO_FEATURE {
+            return side;
+        }
+        let mut best = R::HALF;
+        for ccw in [true, false] {
+            if let Some(face) = neighbour(&support, v, id, facing, ccw) {
+                let cos = face.normal.dot(facing);
+                if cos > best {
+                    best = cos;
+                    side.face = Some(face);
+                }
+            }
+        }
+        side
+    }
+
+    /// The ends of the side along the tangent: the support point, and the
+    /// far end of the face's flat side.
+    fn ends(&self) -> (End<R>, Option<End<R>>) {
+        let near = End { point: self.support + self.facing * self.radius, id: self.support_id };
+        let far = self.face.map(|f| End { point: f.other + f.normal * self.radius, id: f.other_id });
+        (near, far)
+    }
+
+    /// How far from `x` along `facing` the side's boundary is, on the line
+    /// through `x` along the normal, and the feature it meets there: the
+    /// highest of the flat side and the arcs around its vertices.
+    fn reach(&self, x: V2<R>) -> (R, Feature) {
+        let f = self.facing;
+        let r = self.radius;
+        let mut best: Option<(R, Feature)> = None;
+        let mut keep = |mu: R, id: Feature| {
+            if best.is_none_or(|(b, _)| mu > b) {
+                best = Some((mu, id));
+            }
+        };
+        // The flat side from `p0` by `e`, met where `x + mu f = p0 + nu e`.
+        let flat = self.face.map(|face| {
+            let p0 = self.support + face.normal * r;
+            let e = face.other + face.normal * r - p0;
+            let across = f.cross(e);
+            let (mu, nu) = ((p0 - x).cross(e) / across, (p0 - x).cross(f) / across);
+            (p0, e, mu, nu, face.id)
+        });
+        if let Some((_, _, mu, nu, id)) = flat {
+            if nu >= R::ZERO && nu <= R::ONE {
+                keep(mu, id);
+            }
+        }
+        if r > R::ZERO {
+            let other = self.face.map(|face| (face.other, face.other_id));
+            for (c, id) in [Some((self.support, self.support_id)), other].into_iter().flatten() {
+                let w = x - c;
+                let h = w.cross(f);
+                if h * h <= r * r {
+                    keep((r * r - h * h).sqrt() - w.dot(f), id);
+                }
+            }
+        }
+        // Off every piece by rounding only (the overlap keeps `x` within
+        // the side's interval): the nearest end of the flat side, or the
+        // support point.
+        best.unwrap_or_else(|| match flat {
+            Some((p0, e, _, nu, id)) => ((p0 + e * nu.max(R::ZERO).min(R::ONE) - x).dot(f), id),
+            None => ((self.support + f * r - x).dot(f), self.support_id),
+        })
+    }
+}
+
+/// The edge at `v` (support vertex of id `id` along `facing`) on its
+/// counter-clockwise (`ccw`) or clockwise side: gift wrapping with the
+/// support function alone. The support a quarter turn round is a vertex on
+/// that side; the support along the normal of the chord to it is a vertex
+/// beyond the chord, between the two, until none is: then the chord is the
+/// edge. `None` when `v` is also the support a quarter turn round (its
+/// edge on that side faces away) or the ids leave the polytope.
+fn neighbour<R: Real>(
+    support: &impl Fn(V2<R>) -> (V2<R>, u32),
+    v: V2<R>,
+    id: u32,
+    facing: V2<R>,
+    ccw: bool,
+) -> Option<Face<R>> {
+    let chord = |w: V2<R>| if ccw { w - v } else { v - w };
+    let (mut w, mut wid) = support(if ccw { facing.perp() } else { facing.perp_cw() });
+    for _ in 0..MAX_STEPS {
+        if wid == id || wid == NO_FEATURE {
+            return None;
+        }
+        let normal = chord(w).perp_cw();
+        let (q, qid) = support(normal);
+        if qid == wid || qid == id || qid == NO_FEATURE || (q - w).dot(normal) <= R::ZERO {
+            break;
+        }
+        (w, wid) = (q, qid);
+    }
+    let normal = chord(w).perp_cw().try_normalize()?;
+    let start = if ccw { id } else { wid };
+    Some(Face { other: w, other_id: vertex(wid), normal, id: edge(start) })
+}
+
+/// The manifold's points of a pair whose normal (in the pair frame, from A
+/// towards B) the distance or penetration query gave: those whose
+/// separation is at most `margin`, added to `out`.
+pub(crate) fn contact_points<R, A, B>(pair: &Pair<'_, R, A, B>, normal: V2<R>, margin: R, out: &mut Manifold<R>)
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let (polytope_a, polytope_b) = pair.polytopes();
+    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a);
+    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b);
+    let tangent = normal.perp();
+    let along = |e: &End<R>| e.point.dot(tangent);
+    // Each side's interval, its lower end first; then the overlap, the
+    // source of each end (true for A) kept.
+    let interval = |side: &Side<R>| {
+        let (near, far) = side.ends();
+        match far {
+            Some(far) if along(&far) < along(&near) => (far, near),
+            Some(far) => (near, far),
+            None => (near, near),
+        }
+    };
+    let ((a_lo, a_hi), (b_lo, b_hi)) = (interval(&a), interval(&b));
+    let lo = if along(&b_lo) > along(&a_lo) { (b_lo, false) } else { (a_lo, true) };
+    let hi = if along(&b_hi) < along(&a_hi) { (b_hi, false) } else { (a_hi, true) };
+    let mut add = |point: V2<R>, separation: R, id: FeatureId| {
+        if separation <= margin {
+            out.push(ContactPoint { point: pair.to_world_point(point), separation, id });
+        }
+    };
+    // An end of one side, paired with the other side's boundary across.
+    let mut across = |(end, from_a): (End<R>, bool)| {
+        if from_a {
+            let (mu, id) = b.reach(end.point);
+            add(end.point, -mu, FeatureId { a: end.id, b: id });
+        } else {
+            let (mu, id) = a.reach(end.point);
+            add(end.point + normal * mu, -mu, FeatureId { a: id, b: end.id });
+        }
+    };
+    let (l, h) = (along(&lo.0), along(&hi.0));
+    // Ends closer than rounding are one point (two supports straight
+    // across from each other, their faces turning apart).
+    let apart = R::from_u32(16) * R::EPSILON * (l.abs().max(h.abs()) + pair.scale());
+    if h - l > apart {
+        across(lo);
+        across(hi);
+    } else if l <= h {
+        across(lo);
+    } else {
+        // No overlap, by rounding only: the support points, as the closest
+        // (or deepest) pair.
+        let (pa, pb) = (a.ends().0, b.ends().0);
+        add(pa.point, (pb.point - pa.point).dot(normal), FeatureId { a: pa.id, b: pb.id });
+    }
+}
