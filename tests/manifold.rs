@@ -1,0 +1,495 @@
+//! Contact manifolds ([`Gjk::manifold`]) against the exact rational oracle
+//! (`gjk2d_oracle`), in f32 and f64 (one macro, one suite per precision).
+//!
+//! What a manifold promises, and what is checked:
+//! - every point lies on A's boundary, and `point + separation * normal` on
+//!   B's, within `8 eps L` (the oracle's exact distance from the point to the
+//!   boundary);
+//! - the least separation is the exact signed distance (distance apart,
+//!   minus the depth overlapping), within `8 eps L`;
+//! - no separation exceeds the margin; a pair farther apart than the margin
+//!   gives no point, one within it at least one;
+//! - the normal is unit, and the exact one where that is unique;
+//! - two faces that meet give the two ends of the region where they face
+//!   each other, exactly, for inputs where every value is representable;
+//! - the feature ids stay the same under a small motion.
+//!
+//! `L` is the pair's size: the larger bounding radius, or the distance of the
+//! centers if larger (as in `tests/properties.rs`). Shapes are given in world
+//! coordinates with identity transforms, every coordinate rounded to f32 so
+//! the oracle sees exactly what gjk2d sees (the f64 suite widens the same
+//! values); in the placed runs the placement's rounding comes on top,
+//! `4 eps (|t_B - t_A| + e_A + e_B)`, and world points round by `4 eps |p|`
+//! more. The seeded sweeps print the worst errors in units of `eps L`.
+
+use gjk2d::glam::{DVec2, Vec2};
+use gjk2d::*;
+use gjk2d_oracle::{pair, transform_shape, ExactShape};
+use proptest::prelude::*;
+use std::f64::consts::TAU;
+
+#[path = "common/geo.rs"]
+mod geo;
+#[path = "common/rng.rs"]
+mod rng;
+use geo::{norm, sub, Geo, Pt};
+use rng::{cases, Rng};
+
+fn r32(x: f64) -> f64 {
+    x as f32 as f64
+}
+fn rp(p: Pt) -> Pt {
+    [r32(p[0]), r32(p[1])]
+}
+
+/// The exact distance from `p` to the boundary of `shape` (inside or out):
+/// the distance of a point core to it plus its depth in it.
+fn boundary_distance(shape: &ExactShape, p: Pt) -> f64 {
+    let answer = pair(&ExactShape::point(p), shape);
+    answer.distance + answer.depth
+}
+
+/// A random shape of `kind` (0, 1: polygon; 2: circle; 3: capsule; 4:
+/// segment) of about `size`, centered at `c`, every coordinate rounded to
+/// f32.
+fn random_shape(rng: &mut Rng, kind: u32, c: Pt, size: f64) -> Option<Geo> {
+    let (a, b, phi) = (rng.range(0.2, 1.0) * size, rng.range(0.05, 1.0) * size, rng.range(0.0, TAU));
+    let (cp, sp) = (phi.cos(), phi.sin());
+    let place = |x: f64, y: f64| rp([c[0] + cp * x - sp * y, c[1] + sp * x + cp * y]);
+    match kind {
+        0 | 1 => {
+            let count = 3 + (rng.next() % 7) as usize;
+            let mut angles: Vec<f64> = (0..count).map(|_| rng.range(0.0, TAU)).collect();
+            angles.sort_by(|x, y| x.partial_cmp(y).unwrap());
+            let mut kept: Vec<f64> = Vec::new();
+            for th in angles {
+                if kept.last().is_none_or(|&l| th - l >= 0.1) {
+                    kept.push(th);
+                }
+            }
+            if kept.len() >= 2 && kept[0] + TAU - kept[kept.len() - 1] < 0.1 {
+                kept.pop();
+            }
+            (kept.len() >= 3).then(|| Geo::Poly(kept.iter().map(|&th| place(a * th.cos(), b * th.sin())).collect()))
+        }
+        2 => Some(Geo::Circle(rp(c), r32(a))),
+        3 => Some(Geo::Capsule(place(-a, 0.0), place(a, 0.0), r32(0.5 * b))),
+        _ => Some(Geo::Segment(place(-a, 0.0), place(a, 0.0))),
+    }
+}
+
+/// Worst errors of a family, in units of `eps L`.
+#[derive(Clone, Copy, Debug, Default)]
+struct Worst {
+    /// Distance of a point from A's boundary, and of its partner from B's.
+    on_a: f64,
+    on_b: f64,
+    /// The least separation against the exact signed distance.
+    separation: f64,
+    /// The normal against the exact unique one (radians, not in eps L).
+    normal: f64,
+    pairs: u32,
+    points: u32,
+    /// Pairs with two points.
+    two: u32,
+}
+
+impl Worst {
+    fn merge(&mut self, o: Worst) {
+        self.on_a = self.on_a.max(o.on_a);
+        self.on_b = self.on_b.max(o.on_b);
+        self.separation = self.separation.max(o.separation);
+        self.normal = self.normal.max(o.normal);
+        self.pairs += o.pairs;
+        self.points += o.points;
+        self.two += o.two;
+    }
+}
+
+macro_rules! manifold_suite {
+    ($modname:ident, $r:ty, $vec:ident) => {
+        mod $modname {
+            use super::*;
+            type R = $r;
+            const EPS: f64 = <$r>::EPSILON as f64;
+
+            fn v(p: Pt) -> $vec {
+                $vec::new(p[0] as R, p[1] as R)
+            }
+            fn pt(p: $vec) -> Pt {
+                [p.x as f64, p.y as f64]
+            }
+
+            fn build(g: &Geo) -> Option<Box<dyn SupportMap<R>>> {
+                Some(match g {
+                    Geo::Poly(pts) => {
+                        let pts: Vec<$vec> = pts.iter().map(|&p| v(p)).collect();
+                        Box::new(Polygon::<R, 16>::new(&pts).ok()?)
+                    }
+                    Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).ok()?),
+                    Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).ok()?),
+                    Geo::Segment(a, b) => Box::new(Segment::new(v(*a), v(*b)).ok()?),
+                })
+            }
+
+            /// A shape placed by a transform, with its exact counterpart.
+            struct Placed {
+                shape: Box<dyn SupportMap<R>>,
+                tf: Transform<R>,
+                exact: ExactShape,
+                /// Largest local coordinate, radius included.
+                extent: f64,
+            }
+
+            impl Placed {
+                fn new(geo: &Geo, tf: Transform<R>) -> Option<Self> {
+                    let (cs, t) = ((tf.cos() as f64, tf.sin() as f64), pt(tf.translation()));
+                    let exact = transform_shape(&geo.oracle(), cs.0, cs.1, t[0], t[1]);
+                    Some(Self { shape: build(geo)?, tf, exact, extent: geo.extent() })
+                }
+                fn world(geo: &Geo) -> Option<Self> {
+                    Self::new(geo, Transform::IDENTITY)
+                }
+                fn center(&self) -> Pt {
+                    pt(self.tf.transform_point(self.shape.reference_point() + self.shape.center()))
+                }
+            }
+
+            /// Checks the manifold of `a` and `b` within `margin` against the
+            /// oracle; the errors it measured.
+            fn check(a: &Placed, b: &Placed, margin: f64, what: &str) -> Result<Worst, TestCaseError> {
+                let gjk = Gjk::<R>::new();
+                let m = gjk
+                    .manifold(&*a.shape, &a.tf, &*b.shape, &b.tf, margin as R)
+                    .map_err(|e| TestCaseError::fail(format!("{what}: {e}")))?;
+                check_manifold(&m, a, b, margin, what)
+            }
+
+            /// Checks a manifold of `a` and `b` within `margin`, however it
+            /// was asked for (through trait objects or the shapes' types).
+            fn check_manifold(m: &Manifold<R>, a: &Placed, b: &Placed, margin: f64, what: &str) -> Result<Worst, TestCaseError> {
+                let exact = pair(&a.exact, &b.exact);
+                let size = (a.shape.bounding_radius() as f64)
+                    .max(b.shape.bounding_radius() as f64)
+                    .max(norm(sub(b.center(), a.center())));
+                // The placement's rounding, where there is one.
+                let placed = if a.tf == Transform::IDENTITY && b.tf == Transform::IDENTITY {
+                    0.0
+                } else {
+                    4.0 * EPS * (norm(sub(pt(b.tf.translation()), pt(a.tf.translation()))) + a.extent + b.extent)
+                };
+                let tol = 8.0 * EPS * size + placed;
+                let n = pt(m.normal);
+                let ctx = || format!("{what}: margin {margin:e}, exact {exact:?}, manifold {m:?}");
+                prop_assert!(m.len <= 2 && m.points().len() == m.len, "{}", ctx());
+                prop_assert!((norm(n) - 1.0).abs() <= 4.0 * EPS, "{}: normal not unit", ctx());
+                prop_assert!(m.status.is_converged(), "{}", ctx());
+                let sd = exact.signed_distance;
+                if sd > margin + tol {
+                    prop_assert!(m.is_empty(), "{}: apart beyond the margin, yet points", ctx());
+                }
+                if sd < margin - tol {
+                    prop_assert!(!m.is_empty(), "{}: within the margin, yet no point", ctx());
+                }
+                let mut worst = Worst { pairs: 1, two: (m.len == 2) as u32, ..Worst::default() };
+                let mut least = f64::INFINITY;
+                for p in m.points() {
+                    let (x, s) = (pt(p.point), p.separation as f64);
+                    prop_assert!(x[0].is_finite() && x[1].is_finite() && s.is_finite(), "{}", ctx());
+                    prop_assert!(s <= margin, "{}: separation {s:e} beyond the margin", ctx());
+                    let across = [x[0] + s * n[0], x[1] + s * n[1]];
+                    let rounding = tol + 4.0 * EPS * (norm(x) + s.abs());
+                    let (da, db) = (boundary_distance(&a.exact, x), boundary_distance(&b.exact, across));
+                    prop_assert!(da <= rounding, "{}: point {x:?} is {da:e} off A", ctx());
+                    prop_assert!(db <= rounding, "{}: point {across:?} is {db:e} off B", ctx());
+                    worst.on_a = worst.on_a.max(da / (EPS * size));
+                    worst.on_b = worst.on_b.max(db / (EPS * size));
+                    worst.points += 1;
+                    least = least.min(s);
+                }
+                if !m.is_empty() {
+                    let e = (least - sd).abs();
+                    prop_assert!(e <= tol, "{}: least separation {least:e}, exact {sd:e}", ctx());
+                    worst.separation = e / (EPS * size);
+                    if exact.normal_unique {
+                        worst.normal = norm(sub(n, exact.normal));
+                    }
+                }
+                Ok(worst)
+            }
+
+            /// A random pair near contact: kinds, sizes and placement from `rng`.
+            fn random_pair(rng: &mut Rng, scale: f64, placed: bool) -> Option<(Placed, Placed, f64)> {
+                let (ka, kb) = ((rng.next() % 5) as u32, (rng.next() % 5) as u32);
+                let (sa, sb) = (scale * rng.range(0.3, 3.0), scale * rng.range(0.3, 3.0));
+                let ga = random_shape(rng, ka, [0.0, 0.0], sa)?;
+                let angle = rng.range(0.0, TAU);
+                let reach = rng.range(0.3, 1.3) * (sa + sb);
+                let gb = random_shape(rng, kb, [reach * angle.cos(), reach * angle.sin()], sb)?;
+                let margin = r32(rng.range(0.0, 0.5) * scale);
+                if !placed {
+                    return Some((Placed::world(&ga)?, Placed::world(&gb)?, margin));
+                }
+                // The same shapes turned and moved together, up to eight sizes.
+                let (turn, t) = (rng.range(-4.0, 4.0), [rng.range(-8.0, 8.0) * scale, rng.range(-8.0, 8.0) * scale]);
+                let tf = Transform::new(v(t), turn as R).ok()?;
+                let turn_b = turn + rng.range(-0.01, 0.01);
+                let tb = Transform::new(v(t), turn_b as R).ok()?;
+                Some((Placed::new(&ga, tf)?, Placed::new(&gb, tb)?, margin))
+            }
+
+            fn sweep(seed: u64, count: u32, scale: f64, placed: bool) -> Worst {
+                let mut rng = Rng(seed);
+                let mut worst = Worst::default();
+                for i in 0..count {
+                    let Some((a, b, margin)) = random_pair(&mut rng, scale, placed) else { continue };
+                    match check(&a, &b, margin, &format!("case {i}")) {
+                        Ok(w) => worst.merge(w),
+                        Err(e) => panic!("{e}"),
+                    }
+                }
+                worst
+            }
+
+            /// Random pairs of every kind near contact: the measured worst
+            /// errors are printed (`--nocapture`).
+            #[test]
+            fn sweep_worst_errors() {
+                for (family, scale, placed) in [
+                    ("unit", 1.0, false),
+                    ("tiny (2^-20)", 2f64.powi(-20), false),
+                    ("huge (2^20)", 2f64.powi(20), false),
+                    ("placed", 1.0, true),
+                ] {
+                    let w = sweep(0x6d61_6e69 ^ scale.to_bits(), cases(300), scale, placed);
+                    eprintln!("{} {family}: {w:?}", stringify!($r));
+                }
+            }
+
+            proptest! {
+                #![proptest_config(ProptestConfig { cases: 200, rng_seed: proptest::test_runner::RngSeed::Fixed(0x6a6b_3264), ..ProptestConfig::default() })]
+
+                #[test]
+                fn random_pairs_match_the_oracle(seed in any::<u64>(), placed in any::<bool>()) {
+                    let mut rng = Rng(seed);
+                    if let Some((a, b, margin)) = random_pair(&mut rng, 1.0, placed) {
+                        check(&a, &b, margin, "random")?;
+                    }
+                }
+
+                /// Two small polygons of known types: the queries' separating
+                /// axes and closed forms give the normal, not GJK and EPA.
+                #[test]
+                fn small_polygons_by_type_match_the_oracle(seed in any::<u64>()) {
+                    let mut rng = Rng(seed);
+                    let (sa, sb) = (rng.range(0.3, 3.0), rng.range(0.3, 3.0));
+                    let angle = rng.range(0.0, TAU);
+                    let reach = rng.range(0.3, 1.3) * (sa + sb);
+                    let ga = random_shape(&mut rng, 0, [0.0, 0.0], sa);
+                    let gb = random_shape(&mut rng, 0, [reach * angle.cos(), reach * angle.sin()], sb);
+                    let (Some(Geo::Poly(va)), Some(Geo::Poly(vb))) = (&ga, &gb) else { return Ok(()) };
+                    let to = |p: &Vec<Pt>| p.iter().map(|&q| v(q)).collect::<Vec<$vec>>();
+                    let (Ok(pa), Ok(pb)) = (Polygon::<R, 16>::new(&to(va)), Polygon::<R, 16>::new(&to(vb))) else { return Ok(()) };
+                    let (a, b) = (Placed::world(ga.as_ref().unwrap()).unwrap(), Placed::world(gb.as_ref().unwrap()).unwrap());
+                    let margin = r32(rng.range(0.0, 0.5));
+                    let id = Transform::IDENTITY;
+                    let m = Gjk::<R>::new().manifold(&pa, &id, &pb, &id, margin as R).unwrap();
+                    check_manifold(&m, &a, &b, margin, "typed polygons")?;
+                }
+
+                /// Axis-aligned boxes and flat capsules on a box, every value
+                /// a few-bit dyadic: the points are the ends of the region
+                /// where the faces meet, exactly.
+                #[test]
+                fn parallel_faces_span_the_overlap(
+                    wa in 1u32..64, ha in 1u32..64, wb in 1u32..64, hb in 1u32..64,
+                    x in -80i32..80, gap in -8i32..16, capsule in any::<bool>(), far in any::<bool>(),
+                ) {
+                    let unit = 1.0 / 16.0;
+                    let (wa, ha, wb, hb) = (wa as f64 * unit, ha as f64 * unit, wb as f64 * unit, hb as f64 * unit);
+                    // The vertical overlap must be the least: far enough in x
+                    // from either side edge.
+                    let (x, gap) = (x as f64 * unit, gap as f64 * unit / 4.0);
+                    let (left, right) = ((-wa).max(x - wb), wa.min(x + wb));
+                    prop_assume!(right - left > 2.0 * gap.abs().max(unit));
+                    let origin = if far { [10240.0, -10240.0] } else { [0.0, 0.0] };
+                    let at = |p: Pt| [p[0] + origin[0], p[1] + origin[1]];
+                    let ga = Geo::Poly(vec![at([-wa, -ha]), at([wa, -ha]), at([wa, ha]), at([-wa, ha])]);
+                    let y = ha + gap + hb;
+                    let gb = if capsule {
+                        Geo::Capsule(at([x - wb, y]), at([x + wb, y]), hb)
+                    } else {
+                        Geo::Poly(vec![at([x - wb, y - hb]), at([x + wb, y - hb]), at([x + wb, y + hb]), at([x - wb, y + hb])])
+                    };
+                    let (a, b) = (Placed::world(&ga).unwrap(), Placed::world(&gb).unwrap());
+                    check(&a, &b, 0.5, "parallel")?;
+                    let m = Gjk::<R>::new().manifold(&*a.shape, &a.tf, &*b.shape, &b.tf, 0.5).unwrap();
+                    prop_assert_eq!(pt(m.normal), [0.0, 1.0]);
+                    let mut got: Vec<(Pt, f64)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                    got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                    let top = origin[1] + ha;
+                    prop_assert_eq!(got, vec![([origin[0] + left, top], gap), ([origin[0] + right, top], gap)]);
+                }
+            }
+
+            fn rect(w: f64, h: f64, c: Pt) -> Geo {
+                Geo::Poly(vec![[c[0] - w, c[1] - h], [c[0] + w, c[1] - h], [c[0] + w, c[1] + h], [c[0] - w, c[1] + h]])
+            }
+
+            fn manifold_of(a: &Placed, b: &Placed, margin: f64) -> Manifold<R> {
+                Gjk::<R>::new().manifold(&*a.shape, &a.tf, &*b.shape, &b.tf, margin as R).unwrap()
+            }
+
+            #[test]
+            fn box_resting_on_a_wider_box() {
+                let gjk = Gjk::<R>::new();
+                // Full widths and heights: the floor's top face at y = 1.
+                let floor = Rectangle::<R>::new(8.0, 2.0).unwrap();
+                let block = Rectangle::<R>::new(2.0, 2.0).unwrap();
+                let at = Transform::from_translation($vec::new(0.5, 1.75)).unwrap();
+                let m = gjk.manifold(&floor, &Transform::IDENTITY, &block, &at, 0.1).unwrap();
+                assert_eq!(m.normal, $vec::Y);
+                assert_eq!(m.len, 2);
+                let got: Vec<(Pt, f64)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                assert!(got.contains(&([-0.5, 1.0], -0.25)) && got.contains(&([1.5, 1.0], -0.25)), "{got:?}");
+                for p in m.points() {
+                    assert!(matches!(p.id.a, Feature::Edge(_)) && matches!(p.id.b, Feature::Vertex(_)), "{p:?}");
+                }
+                // Apart by 0.5: within a margin of 1, two points; of 0.4, none.
+                let above = Transform::from_translation($vec::new(0.5, 2.5)).unwrap();
+                let m = gjk.manifold(&floor, &Transform::IDENTITY, &block, &above, 1.0).unwrap();
+                assert_eq!(m.len, 2);
+                assert!(m.points().iter().all(|p| p.separation == 0.5));
+                let m = gjk.manifold(&floor, &Transform::IDENTITY, &block, &above, 0.4).unwrap();
+                assert!(m.is_empty() && m.normal == $vec::Y);
+            }
+
+            #[test]
+            fn faces_meeting_part_way_give_one_end_of_each() {
+                // A spans x in [-1, 1], B in [-0.5, 3.5]: the ends are B's
+                // lower-left corner and A's upper-right one.
+                let (a, b) = (Placed::world(&rect(1.0, 1.0, [0.0, 0.0])).unwrap(), Placed::world(&rect(2.0, 1.0, [1.5, 1.75])).unwrap());
+                let m = manifold_of(&a, &b, 0.0);
+                let mut got: Vec<(Pt, f64, FeatureId)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64, p.id)).collect();
+                got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                assert_eq!(got.len(), 2, "{m:?}");
+                assert_eq!((got[0].0, got[0].1), ([-0.5, 1.0], -0.25));
+                assert_eq!((got[1].0, got[1].1), ([1.0, 1.0], -0.25));
+                assert!(matches!(got[0].2, FeatureId { a: Feature::Edge(_), b: Feature::Vertex(_) }), "{got:?}");
+                assert!(matches!(got[1].2, FeatureId { a: Feature::Vertex(_), b: Feature::Edge(_) }), "{got:?}");
+            }
+
+            /// Ids under a small motion (1e-3 of the size, half a degree),
+            /// for pairs whose faces meet well inside their ends.
+            #[test]
+            fn ids_stay_under_a_small_motion() {
+                let ground = rect(4.0, 0.5, [0.0, -0.5]);
+                let bodies = [
+                    rect(0.5, 0.25, [0.3, 0.2]),
+                    Geo::Poly(vec![[-0.6, 0.0], [0.6, 0.0], [0.9, 0.5], [0.0, 1.0], [-0.9, 0.5]]),
+                    Geo::Poly(vec![[-1.0, 0.05], [1.0, 0.05], [0.0, 1.0]]),
+                    Geo::Capsule([-1.0, 0.3], [1.0, 0.3], 0.25),
+                    Geo::Segment([-1.0, 0.02], [1.0, 0.02]),
+                ];
+                let gjk = Gjk::<R>::new();
+                let floor = build(&ground).unwrap();
+                for body in &bodies {
+                    let shape = build(body).unwrap();
+                    let ids = |dx: f64, turn: f64| {
+                        let tf = Transform::new(v([dx, -0.1 + dx]), turn as R).unwrap();
+                        let m = gjk.manifold(&*floor, &Transform::IDENTITY, &*shape, &tf, 0.1).unwrap();
+                        let mut ids: Vec<FeatureId> = m.points().iter().map(|p| p.id).collect();
+                        ids.sort_by_key(|id| format!("{id:?}"));
+                        ids
+                    };
+                    let still = ids(0.0, 0.0);
+                    assert_eq!(still.len(), 2, "{body:?}");
+                    let half_degree = 0.5f64.to_radians();
+                    for (dx, turn) in [(1e-3, 0.0), (-1e-3, 0.0), (0.0, half_degree), (0.0, -half_degree), (1e-3, half_degree)] {
+                        assert_eq!(ids(dx, turn), still, "{body:?} moved by {dx}, turned by {turn}");
+                    }
+                }
+            }
+
+            #[test]
+            fn curved_shapes_give_one_point() {
+                let gjk = Gjk::<R>::new();
+                let ball = Circle::<R>::new(0.5).unwrap();
+                let block = Rectangle::<R>::new(2.0, 2.0).unwrap();
+                let over = Transform::from_translation($vec::new(0.25, 1.25)).unwrap();
+                let m = gjk.manifold(&block, &Transform::IDENTITY, &ball, &over, 0.0).unwrap();
+                assert_eq!(m.len, 1);
+                assert_eq!((pt(m.points[0].point), m.points[0].separation as f64, m.normal), ([0.25, 1.0], -0.25, $vec::Y));
+                assert!(matches!(m.points[0].id, FeatureId { a: Feature::Edge(_), b: Feature::Vertex(0) }), "{m:?}");
+                let beside = Transform::from_translation($vec::new(0.75, 0.0)).unwrap();
+                let m = gjk.manifold(&ball, &Transform::IDENTITY, &ball, &beside, 0.0).unwrap();
+                assert_eq!(m.len, 1);
+                assert_eq!((pt(m.points[0].point), m.points[0].separation as f64, m.normal), ([0.5, 0.0], -0.25, $vec::X));
+                // A circle's core is one point: its vertex 0.
+                assert_eq!(m.points[0].id, FeatureId { a: Feature::Vertex(0), b: Feature::Vertex(0) });
+                let ellipse = Ellipse::<R>::new(1.0, 0.5).unwrap();
+                let m = gjk.manifold(&block, &Transform::IDENTITY, &ellipse, &over, 1.0).unwrap();
+                assert_eq!(m.len, 1, "{m:?}");
+                assert!(matches!(m.points[0].id, FeatureId { a: Feature::Edge(_), b: Feature::Curve }), "{m:?}");
+            }
+
+            #[test]
+            fn capsule_on_a_box_gives_two_when_parallel() {
+                let (a, b) = (Placed::world(&rect(2.0, 1.0, [0.0, 0.0])).unwrap(), Placed::world(&Geo::Capsule([-1.0, 1.5], [1.0, 1.5], 0.625)).unwrap());
+                let m = manifold_of(&a, &b, 0.0);
+                let mut got: Vec<(Pt, f64)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                assert_eq!(got, vec![([-1.0, 1.0], -0.125), ([1.0, 1.0], -0.125)]);
+                check(&a, &b, 0.0, "capsule flat").unwrap();
+                // Tilted: the low end's arc touches, the other end hovers.
+                let tilted = Geo::Capsule([-1.0, 1.5], [1.0, 1.625], 0.625);
+                let b = Placed::world(&tilted).unwrap();
+                let m = manifold_of(&a, &b, 0.5);
+                assert_eq!(m.len, 2, "{m:?}");
+                check(&a, &b, 0.5, "capsule tilted").unwrap();
+                // Capsule on capsule, parallel: two points as well.
+                let a = Placed::world(&Geo::Capsule([-2.0, 0.0], [2.0, 0.0], 0.5)).unwrap();
+                let b = Placed::world(&Geo::Capsule([1.0, 0.75], [3.0, 0.75], 0.5)).unwrap();
+                let m = manifold_of(&a, &b, 0.0);
+                let mut got: Vec<(Pt, f64)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                assert_eq!(got, vec![([1.0, 0.5], -0.25), ([2.0, 0.5], -0.25)]);
+            }
+
+            #[test]
+            fn far_from_the_origin_and_at_every_scale() {
+                for (origin, scale) in [([1e4, -1e4], 1.0), ([0.0, 0.0], 2f64.powi(-40)), ([0.0, 0.0], 2f64.powi(40)), ([3e4, 2e4], 2f64.powi(-4))] {
+                    let origin = rp(origin);
+                    let at = |x: f64, y: f64| [origin[0] + x * scale, origin[1] + y * scale];
+                    let ga = Geo::Poly(vec![at(-2.0, -1.0), at(2.0, -1.0), at(2.0, 1.0), at(-2.0, 1.0)]);
+                    let gb = Geo::Poly(vec![at(-0.5, 0.75), at(1.5, 0.75), at(1.5, 2.75), at(-0.5, 2.75)]);
+                    let (a, b) = (Placed::world(&ga).unwrap(), Placed::world(&gb).unwrap());
+                    check(&a, &b, 0.0, "far or scaled").unwrap();
+                    let m = manifold_of(&a, &b, 0.0);
+                    let mut got: Vec<(Pt, f64)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                    got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                    assert_eq!(got, vec![(at(-0.5, 1.0), -0.25 * scale), (at(1.5, 1.0), -0.25 * scale)], "origin {origin:?}, scale {scale:e}");
+                }
+            }
+
+            #[test]
+            fn bad_margins_are_errors() {
+                let gjk = Gjk::<R>::new();
+                let block = Rectangle::<R>::new(1.0, 1.0).unwrap();
+                let id = Transform::IDENTITY;
+                assert_eq!(gjk.manifold(&block, &id, &block, &id, R::NAN), Err(Error::NonFinite));
+                assert_eq!(gjk.manifold(&block, &id, &block, &id, R::INFINITY), Err(Error::NonFinite));
+                assert_eq!(gjk.manifold(&block, &id, &block, &id, -1.0), Err(Error::OutOfRange));
+                // Coincident shapes: a normal and points, all finite.
+                let m = gjk.manifold(&block, &id, &block, &id, 0.0).unwrap();
+                assert!(!m.is_empty());
+                for p in m.points() {
+                    assert!(p.point.is_finite() && p.separation.is_finite(), "{m:?}");
+                }
+            }
+        }
+    };
+}
+
+manifold_suite!(f32_suite, f32, Vec2);
+manifold_suite!(f64_suite, f64, DVec2);
