@@ -215,34 +215,44 @@ where
     let ((a_lo, a_hi), (b_lo, b_hi)) = (interval(&a), interval(&b));
     let lo = if along(&b_lo) > along(&a_lo) { (b_lo, false) } else { (a_lo, true) };
     let hi = if along(&b_hi) < along(&a_hi) { (b_hi, false) } else { (a_hi, true) };
-    let mut add = |point: V2<R>, separation: R, id: FeatureId| {
-        if separation <= margin {
-            out.push(ContactPoint { point: pair.to_world_point(point), separation, id });
-        }
-    };
     // An end of one side, paired with the other side's boundary across.
-    let mut across = |(end, from_a): (End<R>, bool)| {
+    let across = |(end, from_a): (End<R>, bool)| {
         if from_a {
             let (mu, id) = b.reach(end.point);
-            add(end.point, -mu, FeatureId { a: end.id, b: id });
+            (end.point, -mu, FeatureId { a: end.id, b: id })
         } else {
             let (mu, id) = a.reach(end.point);
-            add(end.point + normal * mu, -mu, FeatureId { a: id, b: end.id });
+            (end.point + normal * mu, -mu, FeatureId { a: id, b: end.id })
         }
     };
+    // The support points: their gap along the normal is the least any two
+    // points straight across can have, and to second order in the normal's
+    // error the query's separation.
+    let (sa, sb) = (a.ends().0, b.ends().0);
+    let supports = (sa.point, (sb.point - sa.point).dot(normal), FeatureId { a: sa.id, b: sb.id });
     let (l, h) = (along(&lo.0), along(&hi.0));
     // Ends closer than rounding are one point (two supports straight
     // across from each other, their faces turning apart).
-    let apart = R::from_u32(16) * R::EPSILON * (l.abs().max(h.abs()) + pair.scale());
-    if h - l > apart {
-        across(lo);
-        across(hi);
+    let rounding = R::from_u32(16) * R::EPSILON * (l.abs().max(h.abs()) + pair.scale());
+    let mut points = if h - l > rounding {
+        [Some(across(lo)), Some(across(hi))]
     } else if l <= h {
-        across(lo);
+        [Some(across(lo)), None]
     } else {
-        // No overlap, by rounding only: the support points, as the closest
-        // (or deepest) pair.
-        let (pa, pb) = (a.ends().0, b.ends().0);
-        add(pa.point, (pb.point - pa.point).dot(normal), FeatureId { a: pa.id, b: pb.id });
+        // No overlap, by rounding only: the closest (or deepest) pair.
+        [Some(supports), None]
+    };
+    // A normal off by `e` (a curved shape's, iterated to a tolerance) moves
+    // a point straight across a tilted face by `e` times the reach, and its
+    // separation with it: the deepest point is then the supports' pair,
+    // whose separation is off by `e` squared.
+    let deepest = if points[1].is_some_and(|q| points[0].is_none_or(|p| q.1 < p.1)) { 1 } else { 0 };
+    if points[deepest].is_some_and(|p| p.1 - supports.1 > rounding) {
+        points[deepest] = Some(supports);
+    }
+    for (point, separation, id) in points.into_iter().flatten() {
+        if separation <= margin {
+            out.push(ContactPoint { point: pair.to_world_point(point), separation, id });
+        }
     }
 }

@@ -24,7 +24,7 @@
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
-use gjk2d_oracle::{pair, transform_shape, ExactShape};
+use gjk2d_oracle::{pair, transform_shape, ExactShape, Shape};
 use proptest::prelude::*;
 use std::f64::consts::TAU;
 
@@ -75,6 +75,18 @@ fn random_shape(rng: &mut Rng, kind: u32, c: Pt, size: f64) -> Option<Geo> {
         2 => Some(Geo::Circle(rp(c), r32(a))),
         3 => Some(Geo::Capsule(place(-a, 0.0), place(a, 0.0), r32(0.5 * b))),
         _ => Some(Geo::Segment(place(-a, 0.0), place(a, 0.0))),
+    }
+}
+
+/// A fixed seed so CI is reproducible; `PROPTEST_RNG_SEED=<u64>` explores
+/// other cases, `GJK2D_LONG=<n>` runs n times as many.
+fn config(seed: u64) -> ProptestConfig {
+    let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(seed);
+    ProptestConfig {
+        cases: cases(200),
+        rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
+        failure_persistence: None,
+        ..ProptestConfig::default()
     }
 }
 
@@ -218,31 +230,52 @@ macro_rules! manifold_suite {
                 Ok(worst)
             }
 
+            /// How a random pair is placed.
+            #[derive(Clone, Copy, Debug)]
+            enum Family {
+                /// In world coordinates, identity transforms.
+                World,
+                /// Both turned and moved together, B turned a little more.
+                Placed,
+                /// B is A turned half round: every edge of B is parallel to
+                /// one of A, so faces meet often, as boxes resting do.
+                Mirrored,
+            }
+
             /// A random pair near contact: kinds, sizes and placement from `rng`.
-            fn random_pair(rng: &mut Rng, scale: f64, placed: bool) -> Option<(Placed, Placed, f64)> {
+            fn random_pair(rng: &mut Rng, scale: f64, family: Family) -> Option<(Placed, Placed, f64)> {
                 let (ka, kb) = ((rng.next() % 5) as u32, (rng.next() % 5) as u32);
                 let (sa, sb) = (scale * rng.range(0.3, 3.0), scale * rng.range(0.3, 3.0));
                 let ga = random_shape(rng, ka, [0.0, 0.0], sa)?;
                 let angle = rng.range(0.0, TAU);
                 let reach = rng.range(0.3, 1.3) * (sa + sb);
-                let gb = random_shape(rng, kb, [reach * angle.cos(), reach * angle.sin()], sb)?;
+                let towards = rp([reach * angle.cos(), reach * angle.sin()]);
+                let gb = random_shape(rng, kb, towards, sb)?;
                 let margin = r32(rng.range(0.0, 0.5) * scale);
-                if !placed {
-                    return Some((Placed::world(&ga)?, Placed::world(&gb)?, margin));
+                match family {
+                    Family::World => Some((Placed::world(&ga)?, Placed::world(&gb)?, margin)),
+                    Family::Placed => {
+                        // Up to eight sizes away from the origin.
+                        let (turn, t) = (rng.range(-4.0, 4.0), [rng.range(-8.0, 8.0) * scale, rng.range(-8.0, 8.0) * scale]);
+                        let tf = Transform::new(v(t), turn as R).ok()?;
+                        let turn_b = turn + rng.range(-0.01, 0.01);
+                        let tb = Transform::new(v(t), turn_b as R).ok()?;
+                        Some((Placed::new(&ga, tf)?, Placed::new(&gb, tb)?, margin))
+                    }
+                    Family::Mirrored => {
+                        // A's own reach along `angle`, about: B's copy of A
+                        // then comes near contact.
+                        let half = Transform::from_cos_sin(v([towards[0] * 0.6, towards[1] * 0.6]), -1.0, 0.0).ok()?;
+                        Some((Placed::world(&ga)?, Placed::new(&ga, half)?, margin))
+                    }
                 }
-                // The same shapes turned and moved together, up to eight sizes.
-                let (turn, t) = (rng.range(-4.0, 4.0), [rng.range(-8.0, 8.0) * scale, rng.range(-8.0, 8.0) * scale]);
-                let tf = Transform::new(v(t), turn as R).ok()?;
-                let turn_b = turn + rng.range(-0.01, 0.01);
-                let tb = Transform::new(v(t), turn_b as R).ok()?;
-                Some((Placed::new(&ga, tf)?, Placed::new(&gb, tb)?, margin))
             }
 
-            fn sweep(seed: u64, count: u32, scale: f64, placed: bool) -> Worst {
+            fn sweep(seed: u64, count: u32, scale: f64, family: Family) -> Worst {
                 let mut rng = Rng(seed);
                 let mut worst = Worst::default();
                 for i in 0..count {
-                    let Some((a, b, margin)) = random_pair(&mut rng, scale, placed) else { continue };
+                    let Some((a, b, margin)) = random_pair(&mut rng, scale, family) else { continue };
                     match check(&a, &b, margin, &format!("case {i}")) {
                         Ok(w) => worst.merge(w),
                         Err(e) => panic!("{e}"),
@@ -255,24 +288,26 @@ macro_rules! manifold_suite {
             /// errors are printed (`--nocapture`).
             #[test]
             fn sweep_worst_errors() {
-                for (family, scale, placed) in [
-                    ("unit", 1.0, false),
-                    ("tiny (2^-20)", 2f64.powi(-20), false),
-                    ("huge (2^20)", 2f64.powi(20), false),
-                    ("placed", 1.0, true),
+                for (name, scale, family) in [
+                    ("unit", 1.0, Family::World),
+                    ("tiny (2^-20)", 2f64.powi(-20), Family::World),
+                    ("huge (2^20)", 2f64.powi(20), Family::World),
+                    ("placed", 1.0, Family::Placed),
+                    ("mirrored", 1.0, Family::Mirrored),
+                    ("mirrored tiny (2^-20)", 2f64.powi(-20), Family::Mirrored),
                 ] {
-                    let w = sweep(0x6d61_6e69 ^ scale.to_bits(), cases(300), scale, placed);
-                    eprintln!("{} {family}: {w:?}", stringify!($r));
+                    let w = sweep(0x6d61_6e69 ^ scale.to_bits(), cases(300), scale, family);
+                    eprintln!("{} {name}: {w:?}", stringify!($r));
                 }
             }
 
             proptest! {
-                #![proptest_config(ProptestConfig { cases: 200, rng_seed: proptest::test_runner::RngSeed::Fixed(0x6a6b_3264), ..ProptestConfig::default() })]
+                #![proptest_config(config(0x6a6b_3264))]
 
                 #[test]
-                fn random_pairs_match_the_oracle(seed in any::<u64>(), placed in any::<bool>()) {
+                fn random_pairs_match_the_oracle(seed in any::<u64>(), family in prop_oneof![Just(Family::World), Just(Family::Placed), Just(Family::Mirrored)]) {
                     let mut rng = Rng(seed);
-                    if let Some((a, b, margin)) = random_pair(&mut rng, 1.0, placed) {
+                    if let Some((a, b, margin)) = random_pair(&mut rng, 1.0, family) {
                         check(&a, &b, margin, "random")?;
                     }
                 }
@@ -329,6 +364,80 @@ macro_rules! manifold_suite {
                     got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
                     let top = origin[1] + ha;
                     prop_assert_eq!(got, vec![([origin[0] + left, top], gap), ([origin[0] + right, top], gap)]);
+                }
+            }
+
+            /// A rounded polygon of random vertices and radius, with its exact
+            /// counterpart: its faces are the flat sides, its corners arcs.
+            fn rounded(rng: &mut Rng, c: Pt, size: f64) -> Option<Placed> {
+                let Some(Geo::Poly(vs)) = random_shape(rng, 0, c, size) else { return None };
+                let radius = r32(rng.range(0.01, 0.5) * size);
+                let pts: Vec<$vec> = vs.iter().map(|&p| v(p)).collect();
+                let shape = Rounded::new(Polygon::<R, 16>::new(&pts).ok()?, radius as R).ok()?;
+                let exact = transform_shape(&Shape::RoundedPolygon { vertices: vs.clone(), radius }, 1.0, 0.0, 0.0, 0.0);
+                let extent = Geo::Poly(vs).extent() + radius;
+                Some(Placed { shape: Box::new(shape), tf: Transform::IDENTITY, exact, extent })
+            }
+
+            proptest! {
+                #![proptest_config(config(0x726f_756e))]
+
+                #[test]
+                fn rounded_polygons_match_the_oracle(seed in any::<u64>(), against in 0u32..5) {
+                    let mut rng = Rng(seed);
+                    let (sa, sb) = (rng.range(0.3, 3.0), rng.range(0.3, 3.0));
+                    let angle = rng.range(0.0, TAU);
+                    let reach = rng.range(0.3, 1.3) * (sa + sb);
+                    let Some(a) = rounded(&mut rng, [0.0, 0.0], sa) else { return Ok(()) };
+                    let c = [reach * angle.cos(), reach * angle.sin()];
+                    let b = if against == 0 { rounded(&mut rng, c, sb) } else { random_shape(&mut rng, against, c, sb).and_then(|g| Placed::world(&g)) };
+                    let Some(b) = b else { return Ok(()) };
+                    let margin = r32(rng.range(0.0, 0.5));
+                    check(&a, &b, margin, "rounded")?;
+                    check(&b, &a, margin, "rounded, swapped")?;
+                }
+
+                /// Every shape type, placed anywhere, through trait objects:
+                /// finite points, at most two, none beyond the margin, the
+                /// least separation the distance or penetration query's.
+                #[test]
+                fn every_shape_gives_a_sound_manifold(ka in 0usize..10, kb in 0usize..10, x in -3.0f64..3.0, y in -3.0f64..3.0, turn in -4.0f64..4.0, margin in 0.0f64..1.0) {
+                    let shapes: Vec<Box<dyn SupportMap<R>>> = vec![
+                        Box::new(Circle::<R>::new(0.75).unwrap()),
+                        Box::new(Rectangle::<R>::new(2.0, 1.0).unwrap()),
+                        Box::new(Triangle::<R>::new(v([-1.0, -0.5]), v([1.0, -0.5]), v([0.0, 1.0])).unwrap()),
+                        Box::new(Segment::<R>::new(v([-1.0, 0.0]), v([1.0, 0.5])).unwrap()),
+                        Box::new(Capsule::<R>::new(v([-1.0, 0.0]), v([1.0, 0.0]), 0.25).unwrap()),
+                        Box::new(Ellipse::<R>::new(2.0, 1.0).unwrap()),
+                        Box::new(HalfEllipse::<R>::new(2.0, 1.0).unwrap()),
+                        Box::new(Slice::<R>::new(1.0, 1.0).unwrap()),
+                        Box::new(Rounded::new(Rectangle::<R>::new(1.0, 1.0).unwrap(), 0.25).unwrap()),
+                        Box::new(Polygon::<R, 8>::new(&[v([0.0, -1.0]), v([1.0, 0.0]), v([0.0, 1.0]), v([-1.0, 0.0])]).unwrap()),
+                    ];
+                    let gjk = Gjk::<R>::new();
+                    let (a, b) = (&*shapes[ka], &*shapes[kb]);
+                    let (ta, tb) = (Transform::IDENTITY, Transform::new(v([x, y]), turn as R).unwrap());
+                    let m = gjk.manifold(a, &ta, b, &tb, margin as R).unwrap();
+                    // The query's answer and its certified error bound (curved
+                    // shapes iterate to a tolerance).
+                    let (signed, bound) = match gjk.distance(a, &ta, b, &tb) {
+                        Some(s) => (s.distance as f64, s.error_bound as f64),
+                        None => gjk.penetration(a, &ta, b, &tb).map_or((0.0, 0.0), |p| (-(p.depth as f64), p.error_bound as f64)),
+                    };
+                    prop_assert!(m.len <= 2 && (signed > margin) == m.is_empty(), "{m:?}, signed distance {signed}");
+                    let mut least = f64::INFINITY;
+                    for p in m.points() {
+                        prop_assert!(p.point.is_finite() && p.separation.is_finite() && p.separation as f64 <= margin, "{m:?}");
+                        least = least.min(p.separation as f64);
+                    }
+                    if !m.is_empty() {
+                        // Curved shapes iterate to the configured relative
+                        // epsilon: the manifold's supports may be that far from
+                        // the query's last ones.
+                        let size = 3.0 + x.abs() + y.abs();
+                        let tol = bound + (4.0 * gjk.config.distance_epsilon() as f64 + 64.0 * EPS) * size;
+                        prop_assert!((least - signed).abs() <= tol, "{m:?}, signed distance {signed}, bound {bound:e}");
+                    }
                 }
             }
 
