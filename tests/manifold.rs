@@ -85,7 +85,6 @@ fn config(seed: u64) -> ProptestConfig {
     ProptestConfig {
         cases: cases(200),
         rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
-        failure_persistence: None,
         ..ProptestConfig::default()
     }
 }
