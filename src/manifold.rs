@@ -124,12 +124,14 @@ impl<R: Real> Side<R> {
             }
         };
         // The flat side from `p0` by `e`, met where `x + mu f = p0 + nu e`.
-        let flat = self.face.map(|face| {
+        // A face at most 60 degrees from `facing` is never parallel to it,
+        // but an edge too short for its cross product (subnormal) is no face.
+        let flat = self.face.and_then(|face| {
             let p0 = self.support + face.normal * r;
             let e = face.other + face.normal * r - p0;
             let across = f.cross(e);
             let (mu, nu) = ((p0 - x).cross(e) / across, (p0 - x).cross(f) / across);
-            (p0, e, mu, nu, face.id)
+            (across != R::ZERO).then_some((p0, e, mu, nu, face.id))
         });
         if let Some((_, _, mu, nu, id)) = flat {
             if nu >= R::ZERO && nu <= R::ONE {
