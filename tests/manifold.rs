@@ -331,6 +331,43 @@ macro_rules! manifold_suite {
                     check_manifold(&m, &a, &b, margin, "typed polygons")?;
                 }
 
+                /// A box, a capsule or a trapezoid resting on a wider box, the
+                /// ends of its bottom face well inside the box's top face:
+                /// moved by 1e-3 of its size and turned by half a degree,
+                /// the manifold keeps its two points and their ids.
+                #[test]
+                fn resting_ids_stay_under_a_small_motion(
+                    wa in 2.0f64..8.0, wb in 0.25f64..1.0, hb in 0.1f64..1.0, x in -0.9f64..0.9,
+                    gap in -0.05f64..0.05, kind in 0u32..3, sign in prop_oneof![Just(-1.0), Just(1.0)],
+                ) {
+                    let gjk = Gjk::<R>::new();
+                    let ground = Rectangle::<R>::new(2.0 * wa as R, 1.0).unwrap(); // top face at y = 0.5
+                    let (body, bottom): (Box<dyn SupportMap<R>>, f64) = match kind {
+                        0 => (Box::new(Rectangle::<R>::new(2.0 * wb as R, 2.0 * hb as R).unwrap()), hb),
+                        1 => (Box::new(Capsule::<R>::new(v([-wb, 0.0]), v([wb, 0.0]), hb as R).unwrap()), hb),
+                        _ => {
+                            let pts = [v([-wb, -hb]), v([wb, -hb]), v([0.5 * wb, hb]), v([-0.5 * wb, hb])];
+                            (Box::new(Polygon::<R, 8>::new(&pts).unwrap()), hb)
+                        }
+                    };
+                    // Well inside the ground's top face, at most 0.9 of the
+                    // way to its ends.
+                    let x = x * (wa - wb);
+                    let ids = |dx: f64, dy: f64, turn: f64| {
+                        let at = Transform::new(v([x + dx, 0.5 + bottom + gap + dy]), turn as R).unwrap();
+                        let m = gjk.manifold(&ground, &Transform::IDENTITY, &*body, &at, 0.1).unwrap();
+                        let mut ids: Vec<FeatureId> = m.points().iter().map(|p| p.id).collect();
+                        ids.sort_by_key(|id| format!("{id:?}"));
+                        ids
+                    };
+                    let still = ids(0.0, 0.0, 0.0);
+                    prop_assert_eq!(still.len(), 2);
+                    let (step, half_degree) = (1e-3 * wb.max(hb), sign * 0.5f64.to_radians());
+                    for (dx, dy, turn) in [(sign * step, 0.0, 0.0), (0.0, sign * step, 0.0), (0.0, 0.0, half_degree), (step, -step, half_degree)] {
+                        prop_assert_eq!(ids(dx, dy, turn), still.clone(), "moved by ({}, {}), turned by {}", dx, dy, turn);
+                    }
+                }
+
                 /// Axis-aligned boxes and flat capsules on a box, every value
                 /// a few-bit dyadic: the points are the ends of the region
                 /// where the faces meet, exactly.
