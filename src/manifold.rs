@@ -54,10 +54,12 @@ fn edge(start: u32) -> Feature {
 struct Face<R> {
     /// The edge's other vertex, and its id.
     other: V2<R>,
-    other_id: Feature,
+    other_id: u32,
     /// Unit outward normal.
     normal: V2<R>,
-    id: Feature,
+    /// Whether the edge runs counter-clockwise from the support vertex to
+    /// `other` (else from `other` to it).
+    ccw: bool,
 }
 
 /// One end of a side's interval along the tangent: a point on the shape's
@@ -75,7 +77,7 @@ struct Side<R> {
     radius: R,
     /// The core's support point along `facing`.
     support: V2<R>,
-    support_id: Feature,
+    support_id: u32,
     face: Option<Face<R>>,
 }
 
@@ -86,7 +88,7 @@ impl<R: Real> Side<R> {
     /// then the one point), for polytope cores.
     fn new(support: impl Fn(V2<R>) -> (V2<R>, u32), facing: V2<R>, radius: R, polytope: bool) -> Self {
         let (v, id) = support(facing);
-        let mut side = Self { facing, radius, support: v, support_id: vertex(id), face: None };
+        let mut side = Self { facing, radius, support: v, support_id: id, face: None };
         if !polytope || id == NO_FEATURE {
             return side;
         }
@@ -100,14 +102,32 @@ impl<R: Real> Side<R> {
                 }
             }
         }
+        // A polygon may have vertices on an edge: the face is the whole
+        // edge, its ends the last vertices on its line either way. Looked
+        // for only where the face is within 2.5 degrees of `facing`, as in
+        // resting contact, where both ends matter: a steeper face meets the
+        // other at its support vertex, and the search costs a support at
+        // each end. (The support vertex can only move when the face is
+        // exactly at right angles: a vertex beyond it on the line would be
+        // farther along `facing`.)
+        let flat = R::ONE - R::ONE / R::from_u32(1024);
+        if let Some(face) = side.face.as_mut().filter(|face| face.normal.dot(facing) >= flat) {
+            (face.other, face.other_id) = along_line(&support, v, (face.other, face.other_id), face.normal);
+            (side.support, side.support_id) = along_line(&support, face.other, (v, id), face.normal);
+        }
         side
+    }
+
+    /// The edge's feature: named by the vertex it starts from.
+    fn edge(&self, face: &Face<R>) -> Feature {
+        edge(if face.ccw { self.support_id } else { face.other_id })
     }
 
     /// The ends of the side along the tangent: the support point, and the
     /// far end of the face's flat side.
     fn ends(&self) -> (End<R>, Option<End<R>>) {
-        let near = End { point: self.support + self.facing * self.radius, id: self.support_id };
-        let far = self.face.map(|f| End { point: f.other + f.normal * self.radius, id: f.other_id });
+        let near = End { point: self.support + self.facing * self.radius, id: vertex(self.support_id) };
+        let far = self.face.map(|f| End { point: f.other + f.normal * self.radius, id: vertex(f.other_id) });
         (near, far)
     }
 
@@ -131,7 +151,7 @@ impl<R: Real> Side<R> {
             let e = face.other + face.normal * r - p0;
             let across = f.cross(e);
             let (mu, nu) = ((p0 - x).cross(e) / across, (p0 - x).cross(f) / across);
-            (across != R::ZERO).then_some((p0, e, mu, nu, face.id))
+            (across != R::ZERO).then_some((p0, e, mu, nu, self.edge(&face)))
         });
         if let Some((_, _, mu, nu, id)) = flat {
             if nu >= R::ZERO && nu <= R::ONE {
@@ -139,8 +159,8 @@ impl<R: Real> Side<R> {
             }
         }
         if r > R::ZERO {
-            let other = self.face.map(|face| (face.other, face.other_id));
-            for (c, id) in [Some((self.support, self.support_id)), other].into_iter().flatten() {
+            let other = self.face.map(|face| (face.other, vertex(face.other_id)));
+            for (c, id) in [Some((self.support, vertex(self.support_id))), other].into_iter().flatten() {
                 let w = x - c;
                 let h = w.cross(f);
                 if h * h <= r * r {
@@ -153,7 +173,7 @@ impl<R: Real> Side<R> {
         // support point.
         best.unwrap_or_else(|| match flat {
             Some((p0, e, _, nu, id)) => ((p0 + e * nu.max(R::ZERO).min(R::ONE) - x).dot(f), id),
-            None => ((self.support + f * r - x).dot(f), self.support_id),
+            None => ((self.support + f * r - x).dot(f), vertex(self.support_id)),
         })
     }
 }
@@ -186,8 +206,31 @@ fn neighbour<R: Real>(
         (w, wid) = (q, qid);
     }
     let normal = chord(w).perp_cw().try_normalize()?;
-    let start = if ccw { id } else { wid };
-    Some(Face { other: w, other_id: vertex(wid), normal, id: edge(start) })
+    Some(Face { other: w, other_id: wid, normal, ccw })
+}
+
+/// The last vertex on the line from `from` through `end` (with its id),
+/// beyond `end`: the support along the face's `normal` turned a little
+/// (1/1024) towards that side, which among the vertices on the line is the
+/// farthest along it. Kept if it lies on the line to rounding (within
+/// `4 eps` of its length: a bend that small moves no point off the
+/// boundary by more); a next face that turns by less than the tilt is
+/// not followed.
+fn along_line<R: Real>(
+    support: &impl Fn(V2<R>) -> (V2<R>, u32),
+    from: V2<R>,
+    end: (V2<R>, u32),
+    normal: V2<R>,
+) -> (V2<R>, u32) {
+    let e = end.0 - from;
+    let Some(onward) = e.try_normalize() else { return end };
+    let (q, qid) = support(normal + onward * (R::ONE / R::from_u32(1024)));
+    let f = q - from;
+    let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
+    if qid == end.1 || qid == NO_FEATURE || e.cross(f).abs() > slack || e.dot(f) <= e.length_squared() {
+        return end;
+    }
+    (q, qid)
 }
 
 /// The manifold's points of a pair whose normal (in the pair frame, from A

@@ -524,6 +524,41 @@ macro_rules! manifold_suite {
                 assert!(matches!(got[1].2, FeatureId { a: Feature::Vertex(_), b: Feature::Edge(_) }), "{got:?}");
             }
 
+            /// Vertices on an edge (which polygons accept) do not cut a face
+            /// short: the points are still the ends of the whole overlap.
+            #[test]
+            fn collinear_vertices_keep_whole_faces() {
+                // Each listed from a vertex inside the face that meets the
+                // other, which is then the first support along it.
+                let ground = Geo::Poly(vec![[0.0, 1.0], [-2.0, 1.0], [-4.0, 1.0], [-4.0, -1.0], [4.0, -1.0], [4.0, 1.0], [2.0, 1.0]]);
+                let c = [0.5, 1.75];
+                let square = [[0.0, -1.0], [1.0, -1.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [-1.0, 1.0], [-1.0, 0.0], [-1.0, -1.0]];
+                let body = Geo::Poly(square.iter().map(|p| [p[0] + c[0], p[1] + c[1]]).collect());
+                let (a, b) = (Placed::world(&ground).unwrap(), Placed::world(&body).unwrap());
+                check(&a, &b, 0.0, "collinear").unwrap();
+                check(&b, &a, 0.0, "collinear, swapped").unwrap();
+                let mut got: Vec<(Pt, f64)> = manifold_of(&a, &b, 0.0).points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                got.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                assert_eq!(got, vec![([-0.5, 1.0], -0.25), ([1.5, 1.0], -0.25)]);
+                // The same through the shapes' types (the separating axes).
+                let to = |g: &Geo| match g {
+                    Geo::Poly(p) => Polygon::<R, 8>::new(&p.iter().map(|&q| v(q)).collect::<Vec<_>>()).unwrap(),
+                    _ => unreachable!(),
+                };
+                let id = Transform::IDENTITY;
+                let m = Gjk::<R>::new().manifold(&to(&ground), &id, &to(&body), &id, 0.0).unwrap();
+                let mut typed: Vec<(Pt, f64)> = m.points().iter().map(|p| (pt(p.point), p.separation as f64)).collect();
+                typed.sort_by(|p, q| p.0[0].partial_cmp(&q.0[0]).unwrap());
+                assert_eq!(typed, got);
+                for p in m.points() {
+                    assert!(matches!(p.id, FeatureId { a: Feature::Edge(_), b: Feature::Vertex(_) }), "{m:?}");
+                }
+                // Flipped: B's whole bottom face rests on A's, whose corners
+                // are A's vertices 0 and 2.
+                let m = Gjk::<R>::new().manifold(&to(&body), &id, &to(&ground), &id, 0.0).unwrap();
+                assert_eq!(m.len, 2, "{m:?}");
+            }
+
             /// Ids under a small motion (1e-3 of the size, half a degree),
             /// for pairs whose faces meet well inside their ends.
             #[test]
