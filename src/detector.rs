@@ -209,7 +209,8 @@ impl<R: Real, P> Gjk<R, P> {
     /// region where they face each other; curved shapes give one.
     ///
     /// A negative margin is [`Error::OutOfRange`], a NaN or infinite one
-    /// [`Error::NonFinite`].
+    /// [`Error::NonFinite`]. Shapes the two queries call touching and apart
+    /// at once (rounding at contact) give an empty manifold.
     ///
     /// ```
     /// use gjk2d::{Feature, Gjk, Rectangle, Transform};

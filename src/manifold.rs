@@ -15,7 +15,11 @@
 //! has to be chosen as the reference (nor kept chosen for the ids to stay),
 //! every point lies on both boundaries, and the closest (or deepest) pair of
 //! points, which lies in both faces, is always within the overlap, so the
-//! least separation is the query's.
+//! least separation is the query's. Where `n` is only iterated to a
+//! tolerance (curved shapes) and a point straight across a tilted face
+//! would miss that pair by more than rounding, the two support points are
+//! the deepest point instead: on both boundaries to second order in the
+//! normal's error.
 //!
 //! All in the pair frame (A's frame, relative to its reference point), as
 //! every query works: shapes far from the origin keep their precision.
