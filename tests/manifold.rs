@@ -223,7 +223,11 @@ macro_rules! manifold_suite {
                     prop_assert!(e <= tol, "{}: least separation {least:e}, exact {sd:e}", ctx());
                     worst.separation = e / (EPS * size);
                     if exact.normal_unique {
-                        worst.normal = norm(sub(n, exact.normal));
+                        // The query's normal, as its own suite bounds it: apart,
+                        // the closest points' rounding over the distance.
+                        let e = norm(sub(n, exact.normal));
+                        prop_assert!(e <= 1e3 * EPS + 8.0 * tol / sd.abs(), "{}: normal off by {e:e}", ctx());
+                        worst.normal = e;
                     }
                 }
                 Ok(worst)
