@@ -357,15 +357,21 @@ macro_rules! manifold_suite {
                     // Well inside the ground's top face, at most 0.9 of the
                     // way to its ends.
                     let x = x * (wa - wb);
+                    // The ids, the ground as A, then as B.
                     let ids = |dx: f64, dy: f64, turn: f64| {
                         let at = Transform::new(v([x + dx, 0.5 + bottom + gap + dy]), turn as R).unwrap();
-                        let m = gjk.manifold(&ground, &Transform::IDENTITY, &*body, &at, 0.1).unwrap();
-                        let mut ids: Vec<FeatureId> = m.points().iter().map(|p| p.id).collect();
-                        ids.sort_by_key(|id| format!("{id:?}"));
-                        ids
+                        let id = Transform::IDENTITY;
+                        let m = gjk.manifold(&ground, &id, &*body, &at, 0.1).unwrap();
+                        let swapped = gjk.manifold(&*body, &at, &ground, &id, 0.1).unwrap();
+                        let sorted = |m: &Manifold<R>| {
+                            let mut ids: Vec<FeatureId> = m.points().iter().map(|p| p.id).collect();
+                            ids.sort_by_key(|id| format!("{id:?}"));
+                            ids
+                        };
+                        (sorted(&m), sorted(&swapped))
                     };
                     let still = ids(0.0, 0.0, 0.0);
-                    prop_assert_eq!(still.len(), 2);
+                    prop_assert_eq!((still.0.len(), still.1.len()), (2, 2));
                     let (step, half_degree) = (1e-3 * wb.max(hb), sign * 0.5f64.to_radians());
                     for (dx, dy, turn) in [(sign * step, 0.0, 0.0), (0.0, sign * step, 0.0), (0.0, 0.0, half_degree), (step, -step, half_degree)] {
                         prop_assert_eq!(ids(dx, dy, turn), still.clone(), "moved by ({}, {}), turned by {}", dx, dy, turn);
