@@ -196,7 +196,14 @@ enum Query {
     Intersect,
     Distance,
     Penetration,
+    /// Contact points of touching and overlapping pairs (margin and
+    /// parry's prediction 0), cold: no manifold of an earlier pass is kept.
+    Manifold,
 }
+
+/// The three queries of every pair family.
+const PAIR_QUERIES: [(Query, &str); 3] =
+    [(Query::Intersect, "intersects"), (Query::Distance, "distance"), (Query::Penetration, "penetration")];
 
 fn g_pairs<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>)], q: Query) {
     let gjk = Gjk::<R>::new();
@@ -212,6 +219,9 @@ fn g_pairs<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>)], q: Query) {
             }
             Query::Penetration => {
                 black_box(gjk.penetration(a, id, b, id));
+            }
+            Query::Manifold => {
+                let _ = black_box(gjk.manifold(a, id, b, id, R::ZERO));
             }
         }
     }
@@ -247,7 +257,9 @@ macro_rules! parry_side {
             use super::{Query, Sh};
             use std::hint::black_box;
             use $p::math::{Pose, Vector};
-            use $p::query::{self, Ray, ShapeCastOptions};
+            use $p::query::{
+                self, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, Ray, ShapeCastOptions,
+            };
             use $p::shape::{Ball, Capsule, ConvexPolygon, Shape};
 
             pub struct PS(Box<dyn Shape>, Pose);
@@ -273,6 +285,8 @@ macro_rules! parry_side {
             }
 
             pub fn pairs(batch: &[(PS, PS)], q: Query) {
+                // Cleared before each pair: every manifold is computed cold.
+                let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::with_capacity(1);
                 for (a, b) in batch {
                     let (a, b) = (black_box(a), black_box(b));
                     match q {
@@ -284,6 +298,20 @@ macro_rules! parry_side {
                         }
                         Query::Penetration => {
                             let _ = black_box(query::contact(&a.1, &*a.0, &b.1, &*b.0, 0.0));
+                        }
+                        Query::Manifold => {
+                            manifolds.clear();
+                            let pos12 = a.1.inv_mul(&b.1);
+                            let mut workspace = None;
+                            let _ = black_box(DefaultQueryDispatcher.contact_manifolds(
+                                &pos12,
+                                &*a.0,
+                                &*b.0,
+                                0.0,
+                                &mut manifolds,
+                                &mut workspace,
+                            ));
+                            black_box(&manifolds);
                         }
                     }
                 }
@@ -370,14 +398,18 @@ fn print_row(r: &Row) {
     );
 }
 
-fn pair_family<const N: usize>(name: &str, cases: &[(Sh, Sh)], passes: usize, rows: &mut Vec<Row>) {
+fn pair_family<const N: usize>(
+    name: &str,
+    cases: &[(Sh, Sh)],
+    queries: &[(Query, &'static str)],
+    passes: usize,
+    rows: &mut Vec<Row>,
+) {
     let g32: Vec<(G<f32, N>, G<f32, N>)> = cases.iter().map(|(a, b)| (g(a), g(b))).collect();
     let g64: Vec<(G<f64, N>, G<f64, N>)> = cases.iter().map(|(a, b)| (g(a), g(b))).collect();
     let p32: Vec<_> = cases.iter().map(|(a, b)| (parry32::build(a), parry32::build(b))).collect();
     let p64: Vec<_> = cases.iter().map(|(a, b)| (parry64::build(a), parry64::build(b))).collect();
-    for (q, qn) in
-        [(Query::Intersect, "intersects"), (Query::Distance, "distance"), (Query::Penetration, "penetration")]
-    {
+    for &(q, qn) in queries {
         let t = time_passes(
             passes,
             cases.len(),
@@ -453,22 +485,31 @@ fn main() {
     let p64 = |r: &mut Rng, c: [f64; 2]| poly(r, 64, c);
     let p1024 = |r: &mut Rng, c: [f64; 2]| poly(r, 1024, c);
     if wanted("poly8") {
-        pair_family::<8>("poly8", &pairs(1, CASES, &p8, &p8), passes, &mut rows);
+        pair_family::<8>("poly8", &pairs(1, CASES, &p8, &p8), &PAIR_QUERIES, passes, &mut rows);
     }
     if wanted("poly64") {
-        pair_family::<64>("poly64", &pairs(2, CASES, &p64, &p64), passes, &mut rows);
+        pair_family::<64>("poly64", &pairs(2, CASES, &p64, &p64), &PAIR_QUERIES, passes, &mut rows);
     }
     if wanted("poly1024") {
-        pair_family::<1024>("poly1024", &pairs(5, CASES, &p1024, &p1024), passes, &mut rows);
+        pair_family::<1024>("poly1024", &pairs(5, CASES, &p1024, &p1024), &PAIR_QUERIES, passes, &mut rows);
     }
     if wanted("circle_poly8") {
-        pair_family::<8>("circle_poly8", &pairs(3, CASES, &circle, &p8), passes, &mut rows);
+        pair_family::<8>("circle_poly8", &pairs(3, CASES, &circle, &p8), &PAIR_QUERIES, passes, &mut rows);
     }
     if wanted("capsule_poly8") {
-        pair_family::<8>("capsule_poly8", &pairs(4, CASES, &capsule, &p8), passes, &mut rows);
+        pair_family::<8>("capsule_poly8", &pairs(4, CASES, &capsule, &p8), &PAIR_QUERIES, passes, &mut rows);
     }
     if wanted("circle_circle") {
-        pair_family::<8>("circle_circle", &pairs(10, CASES, &circle, &circle), passes, &mut rows);
+        pair_family::<8>("circle_circle", &pairs(10, CASES, &circle, &circle), &PAIR_QUERIES, passes, &mut rows);
+    }
+    // Manifolds of 8-gons, and of a circle or a capsule on an 8-gon.
+    let manifold = [(Query::Manifold, "manifold")];
+    let on_p8: [(&str, u64, &Maker); 3] =
+        [("manifold_poly8", 12, &p8), ("manifold_circle_poly8", 13, &circle), ("manifold_capsule_poly8", 14, &capsule)];
+    for (name, seed, a) in on_p8 {
+        if wanted(name) {
+            pair_family::<8>(name, &pairs(seed, CASES, a, &p8), &manifold, passes, &mut rows);
+        }
     }
     if wanted("ray_poly8") {
         ray_family::<8>("ray_poly8", &rays(6, CASES, &p8), passes, &mut rows);

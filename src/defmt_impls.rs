@@ -9,8 +9,8 @@ use crate::shape::{
     Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
 };
 use crate::{
-    CastHit, CastOutcome, CastStart, Detection, EpaConfig, GjkConfig, Motion, Penetration, PenetrationEstimate, Ray,
-    RayCast, RayHit, RayOutcome, Separation, ShapeCast, SupportPoint, Transform,
+    CastHit, CastOutcome, CastStart, ContactPoint, Detection, EpaConfig, GjkConfig, Manifold, Motion, Penetration,
+    PenetrationEstimate, Ray, RayCast, RayHit, RayOutcome, Separation, ShapeCast, SupportPoint, Transform,
 };
 
 /// A glam vector as `(x, y)`.
@@ -47,6 +47,25 @@ impl<R: Real + Format> Format for Separation<R> {
             xy::<R>(self.point_a),
             xy::<R>(self.point_b),
             self.error_bound,
+            self.iterations,
+            self.status
+        )
+    }
+}
+
+impl<R: Real + Format> Format for ContactPoint<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "ContactPoint {{ point: {}, separation: {}, id: {} }}", xy::<R>(self.point), self.separation, self.id)
+    }
+}
+
+impl<R: Real + Format> Format for Manifold<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Manifold {{ normal: {}, points: {}, iterations: {}, status: {} }}",
+            xy::<R>(self.normal),
+            self.points(),
             self.iterations,
             self.status
         )

@@ -8,11 +8,12 @@
 use crate::cast::{cast_pair, CastOutcome, CastStart, Motion, ShapeCast};
 use crate::config::GjkConfig;
 use crate::epa::{Epa, PenetrationSolver};
+use crate::error::Error;
 use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
-use crate::result::{Detection, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+use crate::result::{Detection, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 use crate::shape::SupportMap;
 use crate::simplex::{Simplex, Vertex, Witness};
 use crate::transform::Transform;
@@ -196,6 +197,77 @@ impl<R: Real, P> Gjk<R, P> {
             }
             Proximity::Resolved(penetration) => penetration,
         }
+    }
+
+    /// The contact manifold of A and B: up to two points whose separation
+    /// is at most `margin` (a speculative margin, zero for touching and
+    /// overlapping points only), with the normal from A towards B that
+    /// they share and the features that made them. Empty when the pair is
+    /// farther apart than `margin`.
+    ///
+    /// The normal and the least separation are the distance query's when
+    /// the shapes are apart, the penetration query's when they overlap;
+    /// the manifold keeps that query's iterations and status. Polytope
+    /// cores (polygons, rectangles, segments, capsules and rounded polygons
+    /// by their cores) give two points where faces meet, the ends of the
+    /// region where they face each other; curved shapes give one.
+    ///
+    /// A negative margin is [`Error::OutOfRange`], a NaN or infinite one
+    /// [`Error::NonFinite`]. Shapes the two queries call touching and apart
+    /// at once (rounding at contact) give an empty manifold.
+    ///
+    /// ```
+    /// use gjk2d::{Feature, Gjk, Rectangle, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let floor = Rectangle::new(10.0, 1.0)?; // its top face at y = 0.5
+    /// let crate_ = Rectangle::new(2.0, 2.0)?;
+    /// let resting = Transform::from_translation(Vec2::new(3.0, 1.4))?; // 0.1 deep
+    /// let m = gjk.manifold(&floor, &Transform::IDENTITY, &crate_, &resting, 0.05)?;
+    /// assert_eq!(m.normal, Vec2::Y);
+    /// assert_eq!(m.points().len(), 2); // the crate's two bottom corners
+    /// for p in m.points() {
+    ///     assert!((p.separation + 0.1).abs() < 1e-6);
+    ///     assert!((p.point.y - 0.5).abs() < 1e-6); // on the floor's top face
+    ///     assert!(matches!(p.id.b, Feature::Vertex(_)));
+    /// }
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
+    pub fn manifold<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+        margin: R,
+    ) -> Result<Manifold<R>, Error>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        if !margin.is_finite() {
+            return Err(Error::NonFinite);
+        }
+        if margin < R::ZERO || margin > R::MAX_COORDINATE {
+            return Err(Error::OutOfRange);
+        }
+        let (normal, separation, iterations, status) = match self.distance(a, ta, b, tb) {
+            Some(s) => (s.normal, s.distance, s.iterations, s.status),
+            None => match self.penetration(a, ta, b, tb) {
+                Some(p) => (p.normal, -p.depth, p.iterations, p.status),
+                // Touching to the one query, apart to the other: no point
+                // either would vouch for.
+                None => return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged)),
+            },
+        };
+        let mut manifold = Manifold::empty(normal, iterations, status);
+        if separation <= margin {
+            let local = ta.inverse_rotate(V2::from_glam(normal));
+            crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold);
+        }
+        Ok(manifold)
     }
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,

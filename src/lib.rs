@@ -12,6 +12,8 @@
 //! - [`Gjk::raycast`]: first hit of a ray on any convex shape.
 //! - [`Gjk::cast`]: when a shape translating along a motion first touches
 //!   another (a linear shape cast).
+//! - [`Gjk::manifold`]: up to two contact points with feature ids, within a
+//!   speculative margin, for a physics step.
 //!
 //! Shapes: [`Circle`], [`Polygon`], [`Rectangle`], [`Triangle`], [`Segment`],
 //! [`Capsule`], [`Ellipse`], [`HalfEllipse`], [`Slice`], [`Rounded`], and your
@@ -50,6 +52,7 @@ mod epa;
 mod error;
 mod gjk;
 mod hw_sqrt;
+mod manifold;
 mod minkowski;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 mod point_polygon;
@@ -77,7 +80,10 @@ pub use error::Error;
 pub use minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
 pub use ray::Ray;
 pub use real::Real;
-pub use result::{Detection, LocalRayCast, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+pub use result::{
+    ContactPoint, Detection, Feature, FeatureId, LocalRayCast, Manifold, Penetration, RayCast, RayHit, RayOutcome,
+    Separation, Status,
+};
 pub use shape::{
     Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
     NO_FEATURE,

@@ -278,6 +278,25 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.rotate(p) + self.offset
     }
 
+    /// A's support along `d` on its own, with its feature id: contact
+    /// manifolds ask each shape for its faces apart from the other.
+    pub fn support_a(&self, d: V2<R>) -> (V2<R>, u32) {
+        let (p, id) = self.a.support_feature(d.to_glam(), NO_ID);
+        (V2::from_glam(p), id)
+    }
+
+    /// B's support along `d` (a direction of the pair frame) on its own, in
+    /// the pair frame, with its feature id.
+    pub fn support_b(&self, d: V2<R>) -> (V2<R>, u32) {
+        let (p, id) = self.b.support_feature(self.inverse_rotate(d).to_glam(), NO_ID);
+        (self.rotate(V2::from_glam(p)) + self.offset, id)
+    }
+
+    /// Whether A's core and B's core are polytopes.
+    pub fn polytopes(&self) -> (bool, bool) {
+        (self.a.is_polytope(), self.b.is_polytope())
+    }
+
     /// A point of the pair frame in world coordinates.
     pub fn to_world_point(&self, p: V2<R>) -> R::Vector {
         (self.frame.rotate(p + self.reference_a) + self.frame.translation).to_glam()

@@ -141,3 +141,87 @@ pub(crate) fn hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>) -> RayOutcom
 pub(crate) fn gap_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, normal: V2<R>, gap: R) -> RayOutcome<R> {
     RayOutcome::Hit(RayHit { distance: t, point: (o + d * t).to_glam(), normal: normal.to_glam(), error_bound: gap })
 }
+
+/// Which part of a shape's boundary made a contact point. A solver matches
+/// the points of two steps by it, so it names the feature, not the point:
+/// it stays the same while the shapes move a little.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Feature {
+    /// A vertex of the core, by the id [`SupportMap::support_feature`](crate::SupportMap::support_feature)
+    /// gives it (on a rounded shape, the arc around it).
+    Vertex(u16),
+    /// The edge of the core that starts at this vertex id and runs
+    /// counter-clockwise (on a rounded shape, the flat side along it).
+    Edge(u16),
+    /// A point of a curved boundary (a circle, an ellipse), which no vertex
+    /// or edge names: such a shape has one face.
+    Curve,
+}
+
+/// The features of A and of B that made a contact point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FeatureId {
+    pub a: Feature,
+    pub b: Feature,
+}
+
+/// One point of a [`Manifold`]: `point` lies on A's boundary and
+/// `point + separation * normal` on B's, in world coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactPoint<R: Real> {
+    pub point: R::Vector,
+    /// The gap from A's boundary to B's along the manifold's normal:
+    /// negative where they overlap.
+    pub separation: R,
+    pub id: FeatureId,
+}
+
+/// Up to two contact points of a pair within a speculative margin, with the
+/// one normal they share, as a physics step's contact solver wants them. A
+/// fixed array, no allocation: in 2D two points span any contact region of
+/// convex shapes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Manifold<R: Real> {
+    /// Unit normal from A towards B: the distance query's normal when the
+    /// shapes are apart, the penetration query's when they overlap.
+    pub normal: R::Vector,
+    /// The first [`len`](Self::len) are the points; the rest are unused.
+    pub points: [ContactPoint<R>; 2],
+    pub len: usize,
+    /// Iterations of the query that gave the normal.
+    pub iterations: u32,
+    /// How the query that gave the normal ended.
+    pub status: Status,
+}
+
+impl<R: Real> Manifold<R> {
+    /// The contact points (none when the pair is farther apart than the
+    /// margin).
+    pub fn points(&self) -> &[ContactPoint<R>] {
+        &self.points[..self.len.min(2)]
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// No points yet, with the normal and the query's iterations and status.
+    pub(crate) fn empty(normal: R::Vector, iterations: u32, status: Status) -> Self {
+        let none = ContactPoint {
+            point: V2::<R>::zero().to_glam(),
+            separation: R::ZERO,
+            id: FeatureId { a: Feature::Curve, b: Feature::Curve },
+        };
+        Self { normal, points: [none; 2], len: 0, iterations, status }
+    }
+
+    /// Adds a point if there is room: a third would be a bug, never a panic.
+    pub(crate) fn push(&mut self, point: ContactPoint<R>) {
+        if let Some(slot) = self.points.get_mut(self.len) {
+            *slot = point;
+            self.len += 1;
+        }
+    }
+}

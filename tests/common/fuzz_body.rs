@@ -77,6 +77,22 @@ macro_rules! fuzz_precision {
                     }
                     assert!(p.depth >= 0.0);
                 }
+                // A margin from the values already read (any value: NaN,
+                // infinite and negative ones are errors), so the ray below
+                // reads what it read before manifolds were fuzzed.
+                let margin = values[2];
+                match gjk.manifold(&**a, ta, &**b, tb, margin) {
+                    Ok(m) => {
+                        assert!(m.len <= 2 && margin >= 0.0, "{m:?}");
+                        for p in m.points() {
+                            for x in [p.point.x, p.point.y, p.separation] {
+                                assert!(x.is_finite(), "non-finite manifold {m:?}");
+                            }
+                            assert!(p.separation <= margin, "{m:?}");
+                        }
+                    }
+                    Err(e) => assert!(!(margin >= 0.0 && margin.is_finite() && margin <= R::MAX_COORDINATE), "{e}"),
+                }
             }
             if let (Some(s), Some(t)) = (shapes.first(), transforms.first()) {
                 if let Ok(ray) = Ray::new($vec::new(next(), next()), $vec::new(next(), next())) {
