@@ -43,6 +43,8 @@ KNOWN_MISSES=(
   "stack budget: f64 penetration "
   "stack budget: f64 raycast ellipse (GJK ray cast) "
   "stack budget: f64 cast "
+  "stack budget: f64 manifold "
+  "stack budget: f32 manifold polygon4-hexagon, overlapping "
   "flash budget: (3) + EPA penetration "
   "flash budget: (5) every shape and query, f32 "
 )
@@ -161,14 +163,14 @@ fi
 # ---------------------------------------------------------------- icount and stack
 step "instructions and stack per query on $(board "$M4"), $(board "$M0") and $(board "$RV"), QEMU -icount shift=0"
 for target in "$M4" "$M0" "$RV"; do
-  # The shape cast's rows from a build of their own (see Cargo.toml's
-  # measure-cast), appended after the others.
+  # The shape cast's and the manifold's rows from a build of their own (see
+  # Cargo.toml's measure-step), appended after the others.
   if cargo run --release --bin measure --target "$target" -q >"$out/measure-$target.txt" 2>&1 &&
-    cargo run --release --bin measure --features measure-cast --target "$target" -q >"$out/measure-cast-$target.txt" 2>&1; then
-    grep '^MEASURE|' "$out/measure-cast-$target.txt" >>"$out/measure-$target.txt"
+    cargo run --release --bin measure --features measure-step --target "$target" -q >"$out/measure-step-$target.txt" 2>&1; then
+    grep '^MEASURE|' "$out/measure-step-$target.txt" >>"$out/measure-$target.txt"
     echo "$target: $(grep '^CALIBRATION' "$out/measure-$target.txt" | cut -d'|' -f2-)"
   else
-    cat "$out/measure-cast-$target.txt" 2>/dev/null || true
+    cat "$out/measure-step-$target.txt" 2>/dev/null || true
     cat "$out/measure-$target.txt"
     fail "measure firmware on $target"
   fi
@@ -234,7 +236,7 @@ while IFS='|' read -r _ precision name _ _ stack _; do
 done < <(grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' || true)
 
 # ---------------------------------------------------------------- flash and panics
-SIZE_BINS="size_0_empty size_1_intersect_const size_1_intersect size_2_distance_const size_2_distance size_3_penetration_const size_3_penetration size_4_raycast_const size_4_raycast size_5_all_f32_const size_5_all_f32 size_5_all_f64_const size_5_all_f64 size_6_cast_const"
+SIZE_BINS="size_0_empty size_1_intersect_const size_1_intersect size_2_distance_const size_2_distance size_3_penetration_const size_3_penetration size_4_raycast_const size_4_raycast size_5_all_f32_const size_5_all_f32 size_5_all_f64_const size_5_all_f64 size_6_cast_const size_7_manifold_const"
 declare -A TEXT FLASH PANIC
 panic_report="$out/panic-paths.txt"
 : >"$panic_report"
@@ -298,6 +300,7 @@ declare -A LABEL=(
   [size_5_all_f64_const]="(5) every shape and query, f64"
   [size_5_all_f64]="(5) f64, shapes built at run time"
   [size_6_cast_const]="(6) polygon shape cast alone"
+  [size_7_manifold_const]="(7) polygon contact manifold alone"
 )
 kb() { awk -v b="$1" 'BEGIN{printf "%.2f KB", b/1024}'; }
 {

@@ -8,8 +8,8 @@
 use core::panic::PanicInfo;
 use core::ptr::{addr_of, addr_of_mut, read_volatile, write_volatile};
 use gjk2d::{
-    Capsule, CastOutcome, Circle, Ellipse, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real, Rectangle,
-    Rounded, Segment, Slice, SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Feature, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real,
+    Rectangle, Rounded, Segment, Slice, SupportMap, Transform, Triangle,
 };
 
 /// The runtime's entry attribute: the same firmwares build for Cortex-M and
@@ -243,6 +243,32 @@ pub fn cast<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
             CastOutcome::Miss => sink_u32(1),
         }
         sink_u32(cast.iterations | (cast.status as u32) << 16);
+    }
+}
+
+/// The contact manifold of A and B within a margin (input 24).
+pub fn manifold<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    if let Ok(m) = gjk.manifold(a, &Transform::IDENTITY, b, tb, R::input(24)) {
+        sink_v::<R>(m.normal);
+        for p in m.points() {
+            sink_v::<R>(p.point);
+            p.separation.sink();
+            sink_u32(feature(p.id.a) | feature(p.id.b) << 16);
+        }
+        sink_u32(m.iterations | (m.status as u32) << 16);
+    }
+}
+
+fn feature(f: Feature) -> u32 {
+    match f {
+        Feature::Vertex(i) => i as u32,
+        Feature::Edge(i) => 0x8000 | i as u32,
+        Feature::Curve => 0xFFFF,
     }
 }
 

@@ -8,10 +8,10 @@
 
 use core::hint::black_box as bb;
 use gjk2d::{Capsule, Ellipse, Gjk, Polygon, Real, Transform};
-#[cfg(not(feature = "measure-cast"))]
+#[cfg(not(feature = "measure-step"))]
 use gjk2d::{Circle, Epa, GjkConfig, Ray};
-#[cfg(feature = "measure-cast")]
-use gjk2d::{Motion, ShapeCast};
+#[cfg(feature = "measure-step")]
+use gjk2d::{Manifold, Motion, ShapeCast};
 use gjk2d_firmware::{debug, entry, hprintln, meter};
 #[cfg(target_arch = "arm")]
 use panic_semihosting as _;
@@ -30,7 +30,7 @@ fn v<R: Real>(x: f64, y: f64) -> R::Vector {
     R::vector(R::from_f64(x), R::from_f64(y))
 }
 
-#[cfg(not(feature = "measure-cast"))]
+#[cfg(not(feature = "measure-step"))]
 fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     let gjk = Gjk::<R>::new();
     let sq = [v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)];
@@ -140,10 +140,11 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     Some(())
 }
 
-/// The shape cast's rows alone (`--features measure-cast`): B moving
-/// towards A until they touch (a start in contact would measure the
-/// penetration query instead).
-#[cfg(feature = "measure-cast")]
+/// The rows of the physics-step queries alone (`--features measure-step`):
+/// the shape cast, B moving towards A until they touch (a start in contact
+/// would measure the penetration query instead), and the contact manifold
+/// of a pair apart (within the margin) and of one overlapping.
+#[cfg(feature = "measure-step")]
 fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     let gjk = Gjk::<R>::new();
     let sq = [v::<R>(0.0, 0.0), v::<R>(1.0, 0.0), v::<R>(1.0, 1.0), v::<R>(0.0, 1.0)];
@@ -151,6 +152,7 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     let b = Polygon::<R, 8>::regular(6, R::from_f64(0.6)).ok()?;
     let ta = Transform::<R>::IDENTITY;
     let apart = Transform::<R>::new(v::<R>(2.2, 0.7), R::from_f64(0.3)).ok()?;
+    let over = Transform::<R>::new(v::<R>(1.3, 0.6), R::from_f64(0.3)).ok()?;
     let capsule = Capsule::<R>::new(v::<R>(-0.5, 0.0), v::<R>(0.5, 0.0), R::from_f64(0.25)).ok()?;
     let ea = Ellipse::<R>::new(R::from_f64(4.0), R::from_f64(2.0)).ok()?;
     let eb = Ellipse::<R>::new(R::from_f64(2.0), R::from_f64(3.0)).ok()?;
@@ -166,6 +168,26 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
     report(ctx, p, "cast ellipse-ellipse", cast_iterations(gjk.cast(&ea, &ta, &eb, &e_apart, &towards)), &|| {
         bb(gjk.cast(bb(&ea), bb(&ta), bb(&eb), bb(&e_apart), bb(&towards)));
     });
+    let margin = R::from_f64(2.0);
+    let manifold_iterations = |m: Result<Manifold<R>, gjk2d::Error>| m.map_or(0, |m| m.iterations);
+    report(
+        ctx,
+        p,
+        "manifold polygon4-hexagon, apart",
+        manifold_iterations(gjk.manifold(&a, &ta, &b, &apart, margin)),
+        &|| {
+            let _ = bb(gjk.manifold(bb(&a), bb(&ta), bb(&b), bb(&apart), bb(margin)));
+        },
+    );
+    report(
+        ctx,
+        p,
+        "manifold polygon4-hexagon, overlapping",
+        manifold_iterations(gjk.manifold(&a, &ta, &b, &over, margin)),
+        &|| {
+            let _ = bb(gjk.manifold(bb(&a), bb(&ta), bb(&b), bb(&over), bb(margin)));
+        },
+    );
     Some(())
 }
 
