@@ -25,13 +25,16 @@
 //! index) A touches or overlaps at the start (code 2: `nx,ny,depth,separating,iterations,status`),
 //! else the earliest hit (code 1, ties to the lower index:
 //! `fraction,distance,nx,ny,ax,ay,bx,by,error_bound,iterations,status`), else `[-1,0]`.
+//! `"manifold":[count,nx,ny,iterations,status,(px,py,separation,id_a,id_b) per point]` is
+//! A and B's contact manifold within the page's margin (0.25), a feature id as a number:
+//! vertex k -> k, edge k -> 65536 + k, a curve -> -1.
 //! Status: 0 converged, 1 iteration limit, 2 capacity limit.
 //!
 //! `cargo run --release --example web_expected < scene.txt`
 
 use gjk2d::{
-    Capsule, CastOutcome, Circle, Ellipse, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real, Rectangle,
-    Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Feature, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real,
+    Rectangle, Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
 };
 use std::fmt::Write as _;
 use std::io::Read;
@@ -115,6 +118,9 @@ fn list(values: &[f64]) -> String {
     s
 }
 
+/// The page's speculative margin for the manifold (web/www/app.js).
+const MANIFOLD_MARGIN: f64 = 0.25;
+
 struct Scene {
     records: Vec<Vec<f64>>,
     pair: (usize, usize),
@@ -192,6 +198,20 @@ fn answer<R: Real>(scene: &Scene) -> String {
         }
         None => "[-1,0]".into(),
     };
+    let code = |f: Feature| match f {
+        Feature::Vertex(k) => k as f64,
+        Feature::Edge(k) => 65536.0 + k as f64,
+        Feature::Curve => -1.0,
+    };
+    let m = gjk.manifold(a, ta, b, tb, R::from_f64(MANIFOLD_MARGIN)).expect("margin");
+    let n = c(m.normal);
+    let mut values = vec![m.points().len() as f64, n[0], n[1], m.iterations as f64, status(m.status) as f64];
+    for p in m.points() {
+        let q = c(p.point);
+        values.extend([q[0], q[1], p.separation.to_f64(), code(p.id.a), code(p.id.b)]);
+    }
+    let manifold = list(&values);
+
     let motion = Motion::new(v::<R>(scene.motion[0], scene.motion[1])).expect("motion");
     let (moving, tm) = (bodies[scene.pair.0].0.as_dyn(), &bodies[scene.pair.0].1);
     let mut first: Option<(usize, u32, Vec<f64>)> = None;
@@ -223,7 +243,7 @@ fn answer<R: Real>(scene: &Scene) -> String {
         None => "[-1,0]".into(),
     };
     format!(
-        "{{\"intersects\":{intersects},\"penetration\":{penetration},\"distance\":{distance},\"ray\":{ray},\"cast\":{cast}}}"
+        "{{\"intersects\":{intersects},\"penetration\":{penetration},\"distance\":{distance},\"ray\":{ray},\"cast\":{cast},\"manifold\":{manifold}}}"
     )
 }
 

@@ -32,6 +32,9 @@
 //!   1 hit, 2 touching or overlapping at the start (-1: bad shape or motion); out = hit:
 //!   [fraction, distance, nx, ny, ax, ay, bx, by, error_bound, iterations, status], start:
 //!   [nx, ny, depth, separating, iterations, status], miss: [iterations, status]
+//! - `manifold{32,64}(i, j, margin)` -> the number of contact points (0 to 2; -1: bad shape or
+//!   margin); out = [nx, ny, iterations, status, then per point px, py, separation, id_a, id_b],
+//!   a feature id as a number: vertex k -> k, edge k -> 65536 + k, a curve -> -1
 //!
 //! Status codes: 0 converged, 1 iteration limit, 2 capacity limit.
 //!
@@ -53,8 +56,8 @@ compile_error!("enable the f32 feature, the f64 feature, or both (the default)")
 use core::cell::UnsafeCell;
 use core::mem::MaybeUninit;
 use gjk2d::{
-    Capsule, CastOutcome, Circle, Ellipse, Error, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real, Rectangle,
-    Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Error, Feature, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real,
+    Rectangle, Rounded, Segment, Slice, Status, SupportMap, Transform, Triangle,
 };
 
 /// Most shapes a scene holds.
@@ -339,6 +342,34 @@ fn cast<R: Real>(store: &Store<R>, i: u32, j: u32, mx: f64, my: f64) -> i32 {
     }
 }
 
+fn feature_code(f: Feature) -> f64 {
+    match f {
+        Feature::Vertex(k) => k as f64,
+        Feature::Edge(k) => 65536.0 + k as f64,
+        Feature::Curve => -1.0,
+    }
+}
+
+fn manifold<R: Real>(store: &Store<R>, i: u32, j: u32, margin: f64) -> i32 {
+    let (Some((a, ta)), Some((b, tb))) = (store.get(i), store.get(j)) else {
+        return -1;
+    };
+    let Ok(m) = Gjk::<R>::new().manifold(a, ta, b, tb, R::from_f64(margin)) else {
+        return -1;
+    };
+    let o = out();
+    put_vec::<R>(o, 0, m.normal);
+    o[2] = m.iterations as f64;
+    o[3] = status_code(m.status);
+    for (k, p) in m.points().iter().enumerate() {
+        put_vec::<R>(o, 4 + 5 * k, p.point);
+        o[6 + 5 * k] = p.separation.to_f64();
+        o[7 + 5 * k] = feature_code(p.id.a);
+        o[8 + 5 * k] = feature_code(p.id.b);
+    }
+    m.points().len() as i32
+}
+
 /// The scene buffer: `MAX_SHAPES * STRIDE` `f64`s.
 #[unsafe(no_mangle)]
 pub extern "C" fn scene_ptr() -> *mut f64 {
@@ -432,6 +463,16 @@ pub extern "C" fn cast32(i: u32, j: u32, mx: f64, my: f64) -> i32 {
 #[unsafe(no_mangle)]
 pub extern "C" fn cast64(i: u32, j: u32, mx: f64, my: f64) -> i32 {
     cast(store64(), i, j, mx, my)
+}
+#[cfg(feature = "f32")]
+#[unsafe(no_mangle)]
+pub extern "C" fn manifold32(i: u32, j: u32, margin: f64) -> i32 {
+    manifold(store32(), i, j, margin)
+}
+#[cfg(feature = "f64")]
+#[unsafe(no_mangle)]
+pub extern "C" fn manifold64(i: u32, j: u32, margin: f64) -> i32 {
+    manifold(store64(), i, j, margin)
 }
 
 /// The determinism batch shared with the host test and the firmware.

@@ -102,6 +102,7 @@ try {
         distance: dist,
         ray,
         cast: window.gjk.readCast(),
+        manifold: window.gjk.readManifold(),
       },
     };
   });
@@ -268,7 +269,7 @@ try {
         scene: JSON.parse(get("stage").dataset.scene),
         shown: {
           intersects: [get("intersects").dataset.value === "true" ? 1 : 0, Number(get("intersects-iter").dataset.value)],
-          penetration: pen, distance: dist, ray, cast: g.readCast(),
+          penetration: pen, distance: dist, ray, cast: g.readCast(), manifold: g.readManifold(),
         },
       };
     };
@@ -331,10 +332,13 @@ try {
     distance: e.distance && e.distance.slice(0, 9),
     ray: e.ray.length <= 2 ? e.ray : e.ray[1] === 1 ? e.ray.slice(0, 8) : [e.ray[0], e.ray[1], e.ray[7]],
     cast: e.cast.length <= 2 ? e.cast : e.cast[1] === 1 ? e.cast.slice(0, 12) : [...e.cast.slice(0, 4), e.cast[6]],
+    // The page shows the normal only with points, and no status.
+    manifold: e.manifold[0] > 0 ? [e.manifold[0], e.manifold[1], e.manifold[2], ...e.manifold.slice(5)] : [0],
   });
   let compared = 0, numbers = 0, mismatched = 0;
   const kinds = new Set(), queries = { overlap: 0, apart: 0, hit: 0, inside: 0, miss: 0 };
   const casts = { hit: 0, start: 0, miss: 0 };
+  const manifolds = [0, 0, 0];
   cases.forEach((c, k) => {
     const want = pick(expected[k]);
     for (const key of Object.keys(want)) {
@@ -351,10 +355,12 @@ try {
     queries[c.shown.intersects[0] ? "overlap" : "apart"]++;
     queries[c.shown.ray[1] === 1 ? "hit" : c.shown.ray[1] === 2 ? "inside" : "miss"]++;
     casts[c.shown.cast[1] === 1 ? "hit" : c.shown.cast[1] === 2 ? "start" : "miss"]++;
+    manifolds[c.shown.manifold ? c.shown.manifold[0] : 0]++;
   });
   log(`compared ${compared} scenes (${cases.length - covered.length} interactive, ${covered.length} coverage), ${numbers} numbers, ${mismatched} mismatches; ` +
     `${kinds.size} shape kinds; pairs overlapping ${queries.overlap}, apart ${queries.apart}; rays hit ${queries.hit}, inside ${queries.inside}, miss ${queries.miss}; ` +
-    `casts hit ${casts.hit}, start in contact ${casts.start}, miss ${casts.miss}`);
+    `casts hit ${casts.hit}, start in contact ${casts.start}, miss ${casts.miss}; manifolds of 0, 1, 2 points ${manifolds.join(", ")}`);
+  check(manifolds[1] > 0 && manifolds[2] > 0, "manifolds of one and of two points covered");
   check(casts.hit > 0 && casts.start > 0 && casts.miss > 0, "cast hits, starts in contact and misses covered");
   check(kinds.size === 10, "every shape kind covered");
   check(queries.overlap > 0 && queries.apart > 0 && queries.hit > 0, "overlaps, separations and ray hits covered");

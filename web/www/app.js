@@ -238,12 +238,17 @@ function castMotion() {
   return best;
 }
 
+// The contact manifold's speculative margin (examples/web_expected.rs has it too).
+const MANIFOLD_MARGIN = 0.25;
+
 function pairQueries(i, j) {
+  const count = q("manifold")(i, j, MANIFOLD_MARGIN);
+  const manifold = count >= 0 ? out(4 + 5 * count) : null;
   const hit = q("intersects")(i, j);
   const det = out(3);
   const pen = q("penetration")(i, j) === 1 ? out(6) : null;
   const dist = q("distance")(i, j) === 1 ? out(10) : null;
-  return { hit: hit === 1, det, pen, dist };
+  return { hit: hit === 1, det, pen, dist, manifold };
 }
 
 function nearestTo(a) {
@@ -422,6 +427,25 @@ function renderReadouts() {
     setNum("ray-iter", ray.v[5]);
     $("ray-iter").textContent = ray.v[5] === 0 ? "0 · closed form" : iterText(ray.v[5], ray.v[6]);
   } else setNum("ray-iter", null);
+
+  const man = r.manifold;
+  const count = man ? (man.length - 4) / 5 : 0;
+  $("card-manifold").dataset.state = count > 0 ? "some" : "none";
+  setNum("man-count", man ? count : null);
+  if (man) $("man-count").textContent = `${count} · ${iterText(man[2], man[3])}`;
+  setVec("man-normal", count > 0 ? man[0] : null, count > 0 ? man[1] : null);
+  const featureName = (f) => (f < 0 ? "curve" : f >= 65536 ? `edge ${f - 65536}` : `vertex ${f}`);
+  for (let k = 0; k < 2; k++) {
+    const el = $(`man-p${k}`);
+    if (k < count) {
+      const p = man.slice(4 + 5 * k, 9 + 5 * k);
+      el.dataset.values = p.map(String).join(" ");
+      el.textContent = `(${fmt(p[0])}, ${fmt(p[1])}) sep ${fmt(p[2])} · A ${featureName(p[3])}, B ${featureName(p[4])}`;
+    } else {
+      el.dataset.values = "";
+      el.textContent = "—";
+    }
+  }
 
   const cast = r.cast;
   const co = $("cast-outcome");
@@ -758,6 +782,23 @@ function drawRay() {
   if (r && r.ray && r.ray.code === 2) pill("starts inside", o, colors.ray, 0, -22);
 }
 
+// The manifold's points on A, each with a tick along the normal to where B is.
+function drawManifold() {
+  const man = state.results && state.results.manifold;
+  if (!man) return;
+  const count = (man.length - 4) / 5;
+  for (let k = 0; k < count; k++) {
+    const [px, py, sep] = man.slice(4 + 5 * k, 7 + 5 * k);
+    const onB = [px + man[0] * sep, py + man[1] * sep];
+    const [sx, sy] = S([px, py]), [bx, by] = S(onB);
+    ctx.strokeStyle = colors.hit; ctx.lineWidth = 2;
+    ctx.beginPath(); ctx.moveTo(sx, sy); ctx.lineTo(bx, by); ctx.stroke();
+    ctx.beginPath(); ctx.arc(sx, sy, 4, 0, 2 * Math.PI);
+    ctx.fillStyle = colors.hit; ctx.fill();
+    ctx.lineWidth = 1.5; ctx.strokeStyle = colors.bg; ctx.stroke();
+  }
+}
+
 // The tip of A's motion arrow: where the cast would take A's position.
 function motionHandle() {
   const s = state.shapes[state.a];
@@ -831,6 +872,7 @@ function draw() {
   state.shapes.forEach((_, i) => drawLabel(i, i === state.a ? "a" : i === state.bNow ? "b" : null));
   drawPenetration();
   drawDistance();
+  drawManifold();
   drawRay();
   drawCast();
   drawRotationHandle();
@@ -1070,6 +1112,19 @@ window.gjk = {
         ...vec("cast-point-b"), num("cast-err"), num("cast-iter")];
     }
     return [k, 2, ...vec("cast-normal"), num("cast-iter")];
+  },
+  // The manifold card as numbers: [count, nx, ny, iterations, (px, py,
+  // separation, id_a, id_b) per point], as examples/web_expected.rs prints it.
+  readManifold() {
+    const get = (id) => document.getElementById(id);
+    const c = get("man-count").dataset.value;
+    if (c === "") return null;
+    const count = Number(c);
+    const n = get("man-normal").dataset;
+    const head = count > 0 ? [Number(n.x), Number(n.y)] : [];
+    const points = [];
+    for (let k = 0; k < count; k++) points.push(...get(`man-p${k}`).dataset.values.split(" ").map(Number));
+    return [count, ...head, ...points];
   },
   toScreen(p) {
     const rect = canvas.getBoundingClientRect();
