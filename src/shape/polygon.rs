@@ -14,8 +14,8 @@ use glam::{DVec2, Vec2};
 /// The vertices are a plain array and a length, not a `heapless::Vec`: a
 /// type without a destructor is what lets a `const` declare one
 /// ([`from_array`](Polygon::from_array)). Unused slots stay zero, or hold
-/// copies of the first vertex where a support scan reads them all
-/// ([`SCANS_EVERY_SLOT`](Polygon::SCANS_EVERY_SLOT)), so the derived
+/// copies of the first vertex where a support scan reads them all (small
+/// polygons on hosts), so the derived
 /// comparison compares the polygons.
 ///
 /// Vertices are kept counter-clockwise and relative to the first one (the
