@@ -179,11 +179,9 @@ impl<R: Real, P> Gjk<R, P> {
                 });
             }
         }
-        // GJK and the closed form for rounded shapes in functions of their
-        // own: this frame keeps only the pair and the enclosing simplex's
-        // points while the solver's polytope is on the stack. Matched by
-        // reference: moved out, the points would be copied within this frame
-        // too, at the query's peak stack.
+        // GJK in a function of its own and its result matched by reference,
+        // so this frame holds only the pair and the simplex's points while
+        // the solver's polytope is on the stack.
         match core_proximity(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             Proximity::Overlapping(ref enclosing) => {
                 let estimate = self.solver.solve(&pair, enclosing.points());
@@ -485,8 +483,8 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
 /// towards the tangent moves its hit that much more (on a curve, at most
 /// `sqrt(2 r e)`, which `e / cos` covers with the computed `cos`). At most
 /// the distance plus the shape's diameter, so never inf or NaN. One
-/// formula for every shape, out of line on bare metal: a bound per cast
-/// would be flash that every firmware with rays pays.
+/// formula for every shape, out of line on bare metal so that one copy
+/// serves every shape's cast.
 #[cfg_attr(target_os = "none", inline(never))]
 fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R>, size: R) -> R {
     let eps = R::EPSILON;
@@ -649,9 +647,8 @@ enum Proximity<R: Real> {
 
 /// GJK for the penetration query, with the closed form for rounded shapes
 /// whose cores are apart. Not inlined on bare metal, and it returns no
-/// simplex: GJK's working values are gone from the stack before the
-/// penetration solver's polytope is pushed on it (the query's peak stack on
-/// a microcontroller).
+/// simplex, so GJK's values are off the stack before the solver's polytope
+/// goes on it.
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline(always))]
 fn core_proximity<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> Proximity<R>

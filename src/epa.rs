@@ -43,8 +43,7 @@ pub trait PenetrationSolver<R: Real> {
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
-/// the stack (default 32; the firmware guide tabulates what each `N`
-/// costs). A full polytope merges away the corner that matters least (one
+/// the stack (default 32; a larger `N` is more stack). A full polytope merges away the corner that matters least (one
 /// that no longer can, where there is one); when none can go the answer says
 /// `Status::CapacityLimit`.
 ///
@@ -71,9 +70,7 @@ impl<R: Real, const N: usize> Epa<R, N> {
 impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
     const SEPARATING_AXES: bool = true;
 
-    // Not inlined: the polytope and EPA's working values then live in this
-    // frame alone, not in one frame with GJK's (the peak stack of a
-    // penetration query on a microcontroller).
+    // Not inlined, so the polytope never shares a frame with GJK's values.
     #[inline(never)]
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
         // Checked when the program is compiled: a polytope with no room for
@@ -212,9 +209,8 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     simplex: &[SupportPoint<R>],
 ) -> PenetrationEstimate<R> {
     let curved = !difference.is_polytope();
-    // A closure, inlined where it is called (the loop, and the polish for
-    // curved cores): a function out of line on bare metal would put a frame
-    // of its own under EPA's, at the penetration query's peak stack.
+    // A closure, inlined where it is called: an out-of-line function would
+    // add a frame under EPA's, where the query's stack peaks.
     let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
@@ -222,8 +218,8 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     // GJK's simplex, counter-clockwise, is the polytope to expand. One that
     // only touches the origin (a point, or an edge through it) has no
     // interior yet: the loop below widens it with supports along its edges'
-    // normals, as it widens any polytope, so the seed takes no support of
-    // its own (each inlined support call costs flash on a microcontroller).
+    // normals, as it widens any polytope, so the seed needs no support call
+    // (and no inlined copy of one) of its own.
     // A point that repeats one already in is left out: an edge needs two.
     polytope.clear_all();
     let ccw = match simplex {

@@ -71,9 +71,8 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, A, B> {
     /// Distance between the cores (radii not included): [`distance_loop`],
     /// inlined into each query where the scalar asks for flat frames
-    /// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where that keeps the
-    /// distance query's stack smaller). Elsewhere one shared copy: one loop
-    /// serves distance and penetration.
+    /// (`FLAT_GJK`, in `real.rs`), elsewhere one copy that distance and
+    /// penetration share.
     #[inline(always)]
     pub(crate) fn core_distance<'s, P: Payload<R>>(
         &self,
@@ -102,11 +101,8 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
 /// GJK's distance loop: see [`Pair::core_distance`].
 ///
 /// The simplex lives in the caller's `slot` (pass `None`), started here and
-/// reduced in place: returned by value it would be copied twice (into the
-/// result, and out of its start value), which links `memcpy` into firmware
-/// that has no other use for it. Started here rather than by the caller, a
-/// firmware with both the distance and the penetration query has one copy
-/// of the start.
+/// reduced in place, so it is never copied (a `memcpy` on bare metal) and
+/// both queries share one copy of its start.
 #[inline(always)]
 fn distance_loop<'s, R, A, B, P>(
     pair: &Pair<'_, R, A, B>,

@@ -13,15 +13,11 @@ mod sealed {
     /// Also how generic code reaches per-type choices, and per-type work
     /// through [`per_type`](Self::per_type).
     pub trait Sealed {
-        /// Whether GJK runs in few, flat frames: its loop inlined into each
-        /// query and its simplex solve one function, not three nested ones.
-        /// Only f64 on bare metal, where soft-float code keeps values in
-        /// callee-saved registers that every frame saves on entry, and an
-        /// f64 takes two of them: fewer frames are less stack. In f32 the
-        /// shared and nested functions are the smaller code (one copy of the
-        /// loop for distance and penetration, one of the segment solve
-        /// instead of four), and its frames are small already. Hosts and
-        /// wasm keep their own inlining.
+        /// Whether GJK runs in few, flat frames (its loop inlined into each
+        /// query, its simplex solve one function): f64 on bare metal only,
+        /// where every frame saves wide soft-float registers, so fewer
+        /// frames are less stack; elsewhere the shared functions are the
+        /// smaller code.
         const FLAT_GJK: bool;
 
         /// Whether [`first_max_dot`](Self::first_max_dot) scans in SIMD,

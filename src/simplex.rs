@@ -316,11 +316,9 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// the foot on it; `None` when the triangle encloses the origin (the
 /// boundary counts: touching).
 ///
-/// Out of line on bare metal in f32: its frame (three feet) is then only
-/// on the stack while a triangle is solved, not in every segment solve.
-/// Inlined with the segment solve where the scalar asks for flat frames
-/// (`FLAT_GJK`, in `real.rs`; f64 on bare metal, where one frame takes
-/// less stack than two).
+/// Out of line on bare metal in f32, so its frame is on the stack only
+/// while a triangle is solved; inlined where the scalar asks for flat
+/// frames (`FLAT_GJK`, in `real.rs`).
 #[inline(always)]
 fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
     if R::FLAT_GJK {
@@ -399,10 +397,9 @@ enum Foot<R> {
 /// underflows, or weights that would be 0 * inf (coordinates below 1e-19 in
 /// f32), keep the nearer end: as good as rounding allows.
 ///
-/// Out of line on bare metal in f32: the triangle's unrolled loop would
-/// otherwise hold three copies and the segment a fourth. Inlined where the
-/// scalar asks for flat frames (`FLAT_GJK`, in `real.rs`), and on hosts for
-/// speed.
+/// Out of line on bare metal in f32, so the triangle's unrolled loop and
+/// the segment share one copy; inlined where the scalar asks for flat
+/// frames (`FLAT_GJK`, in `real.rs`) and on hosts, for speed.
 #[inline(always)]
 fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     if R::FLAT_GJK {
