@@ -251,9 +251,9 @@ impl<R: Real, P> Gjk<R, P> {
         if margin < R::ZERO || margin > R::MAX_COORDINATE {
             return Err(Error::OutOfRange);
         }
-        let (normal, separation, iterations, status) = match self.distance_own_frame(a, ta, b, tb) {
+        let (normal, separation, iterations, status) = match in_own_frame(|| self.distance(a, ta, b, tb)) {
             Some(s) => (s.normal, s.distance, s.iterations, s.status),
-            None => match self.penetration_own_frame(a, ta, b, tb) {
+            None => match in_own_frame(|| self.penetration(a, ta, b, tb)) {
                 Some(p) => (p.normal, -p.depth, p.iterations, p.status),
                 // Touching to the one query, apart to the other: no point
                 // either would vouch for.
@@ -262,7 +262,8 @@ impl<R: Real, P> Gjk<R, P> {
         };
         let mut manifold = Manifold::empty(normal, iterations, status);
         if separation <= margin {
-            points_own_frame(a, ta, b, tb, ta.inverse_rotate(V2::from_glam(normal)), margin, &mut manifold);
+            let local = ta.inverse_rotate(V2::from_glam(normal));
+            in_own_frame(|| crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold));
         }
         Ok(manifold)
     }
@@ -370,7 +371,16 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        if let Some(penetration) = self.start_penetration(a, ta, b, tb) {
+        // The cheap intersection test first: most casts start apart, and it
+        // proves it.
+        let start = in_own_frame(|| {
+            if self.intersects(a, ta, b, tb).intersecting {
+                self.penetration(a, ta, b, tb)
+            } else {
+                None
+            }
+        });
+        if let Some(penetration) = start {
             let separating = V2::from_glam(penetration.normal).dot(motion.translation) > R::ZERO;
             return ShapeCast {
                 outcome: CastOutcome::Start(CastStart { penetration, separating }),
@@ -388,70 +398,12 @@ impl<R: Real, P> Gjk<R, P> {
     }
 }
 
-impl<R: Real, P: PenetrationSolver<R>> Gjk<R, P> {
-    /// [`distance`](Self::distance) in a frame of its own on bare metal: a
-    /// query that asks several (the manifold: distance, then penetration,
-    /// then its points) then never holds their working values and EPA's
-    /// polytope on the stack together; its peak is the largest, not the
-    /// sum.
-    #[cfg_attr(target_os = "none", inline(never))]
-    fn distance_own_frame<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Separation<R>>
-    where
-        A: SupportMap<R> + ?Sized,
-        B: SupportMap<R> + ?Sized,
-    {
-        self.distance(a, ta, b, tb)
-    }
-
-    /// [`penetration`](Self::penetration) in a frame of its own on bare
-    /// metal, as [`distance_own_frame`](Self::distance_own_frame).
-    #[cfg_attr(target_os = "none", inline(never))]
-    fn penetration_own_frame<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
-    where
-        A: SupportMap<R> + ?Sized,
-        B: SupportMap<R> + ?Sized,
-    {
-        self.penetration(a, ta, b, tb)
-    }
-
-    /// The cast's check for a start in contact: the cheap intersection test
-    /// first (most casts start apart, and it proves it), the penetration
-    /// only where they touch. In a frame of its own on bare metal, so that
-    /// EPA's polytope and the cast's corners are never on the stack
-    /// together (the cast's peak is then the larger of the two, not their
-    /// sum).
-    #[cfg_attr(target_os = "none", inline(never))]
-    fn start_penetration<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Penetration<R>>
-    where
-        A: SupportMap<R> + ?Sized,
-        B: SupportMap<R> + ?Sized,
-    {
-        if self.intersects(a, ta, b, tb).intersecting {
-            self.penetration(a, ta, b, tb)
-        } else {
-            None
-        }
-    }
-}
-
-/// The manifold's points, with the pair they are found on, in a frame of
-/// their own on bare metal: the caller's frame, which holds the manifold
-/// while the penetration query runs, then need not hold the pair too.
+/// `f()` in a frame of its own on bare metal: a query that asks several
+/// (the cast, the manifold) then never holds their working values and EPA's
+/// polytope on the stack together, and peaks at the largest, not the sum.
 #[cfg_attr(target_os = "none", inline(never))]
-fn points_own_frame<R, A, B>(
-    a: &A,
-    ta: &Transform<R>,
-    b: &B,
-    tb: &Transform<R>,
-    normal: V2<R>,
-    margin: R,
-    out: &mut Manifold<R>,
-) where
-    R: Real,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    crate::manifold::contact_points(&Pair::new(a, ta, b, tb), normal, margin, out);
+fn in_own_frame<T>(f: impl FnOnce() -> T) -> T {
+    f()
 }
 
 /// The shape's closed-form ray cast, in its local frame. A small polygon of
