@@ -240,11 +240,19 @@ SIZE_BINS="size_0_empty size_1_intersect_const size_1_intersect size_2_distance_
 declare -A TEXT FLASH PANIC
 panic_report="$out/panic-paths.txt"
 : >"$panic_report"
+# Cargo hashes a path dependency's location into its symbols, and the order
+# of functions (with the padding between them) follows: the size firmwares
+# are built from a copy of the sources at one fixed path, so their figures
+# are the same wherever the repository is cloned.
+SIZE_SRC=/tmp/gjk2d-size-firmware
+SIZE_TARGET="$CARGO_TARGET_DIR/fixed-path"
+rm -rf "$SIZE_SRC" && mkdir -p "$SIZE_SRC"
+tar -C "$ROOT" --exclude=./.git --exclude=target -cf - . | tar -C "$SIZE_SRC" -xf -
 for target in "$M4" "$M0" "$RV"; do
   step "size firmwares and the no-panic link check, $target"
   for bin in $SIZE_BINS; do
-    elf="$CARGO_TARGET_DIR/$target/release/$bin"
-    if cargo build --release --bin "$bin" --target "$target" -q >"$out/build-$bin-$target.txt" 2>&1; then
+    elf="$SIZE_TARGET/$target/release/$bin"
+    if (cd "$SIZE_SRC/firmware" && CARGO_TARGET_DIR="$SIZE_TARGET" cargo build --release --bin "$bin" --target "$target" -q) >"$out/build-$bin-$target.txt" 2>&1; then
       PANIC[$bin.$target]=no
     else
       if ! grep -q gjk2d_panic_path_linked "$out/build-$bin-$target.txt"; then
@@ -254,8 +262,8 @@ for target in "$M4" "$M0" "$RV"; do
       fi
       PANIC[$bin.$target]=yes
       # Link again with the symbol defined, to measure and to name the callers.
-      RUSTFLAGS="-C link-arg=-Tlink.x -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
-        CARGO_TARGET_DIR="$FW/target/panic-diag" cargo build --release --bin "$bin" --target "$target" -q
+      (cd "$SIZE_SRC/firmware" && RUSTFLAGS="-C link-arg=-Tlink.x -C link-arg=--defsym=gjk2d_panic_path_linked=0" \
+        CARGO_TARGET_DIR="$FW/target/panic-diag" cargo build --release --bin "$bin" --target "$target" -q)
       elf="$FW/target/panic-diag/$target/release/$bin"
       {
         echo "== $bin ($target): panic paths (caller, innermost source line, panic entry)"
