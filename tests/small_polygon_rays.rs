@@ -214,3 +214,27 @@ fn grazing_past_a_vertex() {
         3.0208476869397503
     );
 }
+
+/// A ray along a sliver's face, outside it by 4.5e-8 (less than rounding),
+/// passes its sharp tip: the clip enters through the other face at the tip,
+/// whose line the ray crosses 2.4e-5 beyond the tip. The hit may stand (its
+/// bound covers the miss), but its point must be on the polygon: the tip,
+/// not a point on the line past it (found by the f32 suite above).
+#[test]
+fn along_a_sliver_past_its_tip() {
+    let vertices = [[0.25f32, -1.5], [1.5, 1.875], [0.375, -1.125]];
+    let polygon = Polygon::<f32, 8>::new(&vertices.map(|p| Vec2::new(p[0], p[1]))).unwrap();
+    let ray = Ray::new(Vec2::new(3.75, 7.875), Vec2::new(-0.351_123_45, -0.936_329_2)).unwrap();
+    let exact = Shape::Polygon(vertices.iter().map(|p| [p[0] as f64, p[1] as f64]).collect());
+    let exact = transform_shape(&exact, 1.0, 0.0, 0.0, 0.0);
+    let dynamic: &dyn SupportMap<f32> = &polygon;
+    for cast in [
+        Gjk::<f32>::new().raycast(&ray, 0.0, &polygon, &Transform::IDENTITY),
+        Gjk::<f32>::new().raycast(&ray, 0.0, dynamic, &Transform::IDENTITY),
+    ] {
+        if let RayOutcome::Hit(hit) = cast.outcome {
+            let off = pair(&ExactShape::point([hit.point.x as f64, hit.point.y as f64]), &exact).signed_distance;
+            assert!(off.abs() <= 8.0 * f32::EPSILON as f64 * 10.0, "{cast:?}: the point is {off:e} off the boundary");
+        }
+    }
+}

@@ -81,7 +81,28 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     }
     let normal = (next[entry] - v[entry]).perp_cw().try_normalize().unwrap_or(-d);
     let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, latest_exit);
-    RayCast::closed_form(gap_hit(o, d, t, normal, gap))
+    RayCast::closed_form(edge_hit(o, d, t, exit, (v[entry], next[entry]), normal, gap))
+}
+
+/// The hit at `t` through `edge`, or at the edge's nearer end where
+/// rounding put the ray's point past one: a ray along a neighbouring face,
+/// outside it by less than rounding, crosses this edge's line beyond the
+/// vertex they share, by the miss over the sine of their angle, which is
+/// far off the polygon for a sliver. The end's own distance along the ray
+/// is then the hit's, so its point lies on the boundary within the miss.
+#[inline(always)]
+fn edge_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, exit: R, edge: (V2<R>, V2<R>), normal: V2<R>, gap: R) -> RayOutcome<R> {
+    let (a, b) = edge;
+    let along = (o + d * t - a).dot(b - a);
+    let end = if along < R::ZERO {
+        Some(a)
+    } else if along > (b - a).dot(b - a) {
+        Some(b)
+    } else {
+        None
+    };
+    let t = end.map_or(t, |end| (end - o).dot(d).max(R::ZERO).min(exit));
+    gap_hit(o, d, t, normal, gap)
 }
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
@@ -282,8 +303,8 @@ struct Clip<R: Real> {
     o: V2<R>,
     d: V2<R>,
     span: Span<R>,
-    /// The normal of the edge the ray last entered through.
-    entered: Option<V2<R>>,
+    /// The edge the ray last entered through, and its normal.
+    entered: Option<((V2<R>, V2<R>), V2<R>)>,
     rounding: FaceRounding<R>,
     inner: Span<R>,
     inner_empty: bool,
@@ -314,7 +335,7 @@ impl<R: Real> Clip<R> {
         }
         let (empty, raised) = self.span.clip(numerator, denominator);
         if raised {
-            self.entered = Some(normal);
+            self.entered = Some(((a, b), normal));
         }
         empty
     }
@@ -357,11 +378,11 @@ impl<R: Real> Clip<R> {
     fn outcome(self) -> RayCast<R> {
         RayCast::closed_form(match self.entered {
             None => RayOutcome::Inside,
-            Some(normal) => {
+            Some((edge, normal)) => {
                 let normal = normal.try_normalize().unwrap_or(-self.d);
                 let t = self.span.lower;
                 let gap = self.rounding.gap(t, normal.dot(self.d), self.inner, self.inner_empty, self.outer_exit);
-                gap_hit(self.o, self.d, t, normal, gap)
+                edge_hit(self.o, self.d, t, self.span.upper, edge, normal, gap)
             }
         })
     }
