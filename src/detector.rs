@@ -73,6 +73,15 @@ impl<R: Real, P> Gjk<R, P> {
                 let intersecting = !crate::sat::Axes::new(&pair, pa, pb).separated();
                 return Detection { intersecting, iterations: 1, status: Status::Converged };
             }
+            // A segment: the axes decide, as for two polygons. Not a
+            // capsule: its cores are mostly apart by less than the radius,
+            // which the axes cannot decide, and GJK then runs after them.
+            if pair.radius() == R::ZERO {
+                if let Some(axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
+                    let intersecting = !axes.separated();
+                    return Detection { intersecting, iterations: 1, status: Status::Converged };
+                }
+            }
         }
         let (intersecting, iterations, status) = intersect(
             &pair,
@@ -170,13 +179,16 @@ impl<R: Real, P> Gjk<R, P> {
                     return None;
                 }
                 let (depth, normal) = axes.penetration();
-                return Some(Penetration {
-                    normal: pair.to_world_vector(normal),
-                    depth,
-                    error_bound: R::ZERO,
-                    iterations: 1,
-                    status: Status::Converged,
-                });
+                return Some(separating_axes_penetration(&pair, depth, normal));
+            }
+            if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
+                match rounded_axes(&pair, axes) {
+                    RoundedAxes::Overlapping(depth, normal) => {
+                        return Some(separating_axes_penetration(&pair, depth, normal))
+                    }
+                    RoundedAxes::Apart => return None,
+                    RoundedAxes::Undecided => {}
+                }
             }
         }
         // GJK in a function of its own and its result matched by reference,
@@ -492,6 +504,63 @@ where
         iterations: 1,
         status: Status::Converged,
     })
+}
+
+/// The penetration the separating axes found: exact, with no iteration.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn separating_axes_penetration<R, A, B>(pair: &Pair<'_, R, A, B>, depth: R, normal: V2<R>) -> Penetration<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    Penetration {
+        normal: pair.to_world_vector(normal),
+        depth,
+        error_bound: R::ZERO,
+        iterations: 1,
+        status: Status::Converged,
+    }
+}
+
+/// What the separating axes of a rounded core pair decide.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+enum RoundedAxes<R> {
+    /// The cores overlap: the shapes' depth (the cores' plus the radii) and
+    /// normal.
+    Overlapping(R, V2<R>),
+    /// An axis separates the cores by more than the radii.
+    Apart,
+    /// The cores are apart, by less than the radii along every axis: their
+    /// distance, which may be more, is GJK's to find.
+    Undecided,
+}
+
+/// The verdict of a segment core's and a small polygon's separating axes
+/// on the rounded shapes. An axis's separation is at most the cores'
+/// distance, so beyond the radii by more than its rounding (the shapes' sizes
+/// and offset, 16 eps of them) it proves them apart; short of it, only
+/// overlapping cores are certain.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn rounded_axes<R, A, B>(pair: &Pair<'_, R, A, B>, axes: &crate::sat::Axes<R>) -> RoundedAxes<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let (core_depth, normal) = axes.penetration();
+    let radius = pair.radius();
+    if core_depth >= R::ZERO {
+        return RoundedAxes::Overlapping(core_depth + radius, normal);
+    }
+    let size = pair.scale() + pair.centers.x.abs() + pair.centers.y.abs();
+    if -core_depth > radius + R::from_u32(16) * R::EPSILON * size {
+        RoundedAxes::Apart
+    } else {
+        RoundedAxes::Undecided
+    }
 }
 
 /// The penetration of a point core and a small polygon: the circle's radius

@@ -240,6 +240,23 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some((a.small_polygon()?.vertices, b.small_polygon()?.vertices))
     }
 
+    /// A segment core (a capsule's, a segment's) and a small polygon, where
+    /// both shapes' types are known when the program is compiled: the
+    /// segment's end points in its own frame, the polygon's vertices, and
+    /// whether the segment is A's.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn segment_and_small_polygon(&self) -> Option<([V2<R>; 2], Vertices<'s, R>, bool)> {
+        if !Self::shapes_known() {
+            return None;
+        }
+        let (a, b): (&'s A, &'s B) = (self.a, self.b);
+        if let Some(segment) = a.segment_core() {
+            return Some((segment, b.small_polygon()?.vertices, true));
+        }
+        Some((b.segment_core()?, a.small_polygon()?.vertices, false))
+    }
+
     /// A point core (a circle's centre) and a small polygon, where both
     /// shapes' types are known when the program is compiled: the point in
     /// the polygon's frame, the polygon's vertices, and whether the point is

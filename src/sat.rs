@@ -82,6 +82,18 @@ impl<R: Real> Axes<R> {
         Self { normals, least }
     }
 
+    /// The separating axes of a segment core and a small polygon, where
+    /// the pair has them ([`Pair::segment_and_small_polygon`]): the segment
+    /// is a polygon of two vertices, whose two edges are its two sides.
+    pub fn of_segment_and_polygon<A, B>(pair: &Pair<'_, R, A, B>) -> Option<Self>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let (segment, polygon, segment_is_a) = pair.segment_and_small_polygon()?;
+        Some(if segment_is_a { Self::new(pair, &segment, polygon) } else { Self::new(pair, polygon, &segment) })
+    }
+
     /// Whether an axis separates the polygons (touching does not).
     pub fn separated(&self) -> bool {
         self.least.iter().fold(false, |any, &s| any | (s > R::ZERO))

@@ -12,8 +12,11 @@
 
 #[path = "common/geo.rs"]
 mod geo;
+#[path = "common/penetration_check.rs"]
+mod penetration_check;
 #[path = "common/small_polygon.rs"]
 mod small_polygon;
+use penetration_check::{check_penetration, reach};
 use small_polygon::{polygon, Spec};
 
 use gjk2d::glam::{DVec2, Vec2};
@@ -86,21 +89,9 @@ macro_rules! sat_suite {
                 let fast = gjk.penetration(&poly_a, &ta, &poly_b, &tb);
                 let slow = gjk.penetration(da, &ta, db, &tb);
                 for (pen, path) in [(fast, "axes"), (slow, "epa")] {
-                    match pen {
-                        None => prop_assert!(truth.signed_distance >= -bound, "{path}: no penetration, exact depth {}", truth.depth),
-                        Some(p) => {
-                            prop_assert!(truth.signed_distance <= bound, "{path}: penetration, exact distance {}", truth.signed_distance);
-                            let depth = p.depth as f64;
-                            prop_assert!((depth - truth.depth).abs() <= bound, "{path}: depth {depth}, exact {}, bound {bound}", truth.depth);
-                            // The overlap along the normal: A's reach along it
-                            // minus B's, which is what moving B by the depth undoes.
-                            let n = [p.normal.x as f64, p.normal.y as f64];
-                            let reach = |w: &[Pt], sign: f64| w.iter().map(|q| sign * (q[0] * n[0] + q[1] * n[1])).fold(f64::MIN, f64::max);
-                            let along = reach(&wa, 1.0) + reach(&wb, -1.0);
-                            prop_assert!((along - depth).abs() <= 2.0 * bound, "{path}: overlap {along} along the normal, depth {depth}");
-                            prop_assert!(p.status.is_converged());
-                        }
-                    }
+                    let answer = pen.map(|p| (p.depth as f64, [p.normal.x as f64, p.normal.y as f64], p.status.is_converged()));
+                    check_penetration(path, answer, truth.signed_distance, truth.depth, bound, |n| reach(&wa, 0.0, n), |n| reach(&wb, 0.0, n))
+                        .map_err(TestCaseError::fail)?;
                 }
                 if let (Some(f), Some(s)) = (fast, slow) {
                     prop_assert!((f.depth as f64 - s.depth as f64).abs() <= 2.0 * bound);

@@ -84,6 +84,9 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     RayCast::closed_form(edge_hit(o, d, t, exit, (v[entry], next[entry]), normal, gap))
 }
 
+/// An edge by its two ends, counter-clockwise.
+type Edge<R> = (V2<R>, V2<R>);
+
 /// The hit at `t` through `edge`, or at the edge's nearer end where
 /// rounding put the ray's point past one: a ray along a neighbouring face,
 /// outside it by less than rounding, crosses this edge's line beyond the
@@ -91,7 +94,7 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
 /// far off the polygon for a sliver. The end's own distance along the ray
 /// is then the hit's, so its point lies on the boundary within the miss.
 #[inline(always)]
-fn edge_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, exit: R, edge: (V2<R>, V2<R>), normal: V2<R>, gap: R) -> RayOutcome<R> {
+fn edge_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, exit: R, edge: Edge<R>, normal: V2<R>, gap: R) -> RayOutcome<R> {
     let (a, b) = edge;
     let along = (o + d * t - a).dot(b - a);
     let end = if along < R::ZERO {
@@ -304,7 +307,7 @@ struct Clip<R: Real> {
     d: V2<R>,
     span: Span<R>,
     /// The edge the ray last entered through, and its normal.
-    entered: Option<((V2<R>, V2<R>), V2<R>)>,
+    entered: Option<(Edge<R>, V2<R>)>,
     rounding: FaceRounding<R>,
     inner: Span<R>,
     inner_empty: bool,

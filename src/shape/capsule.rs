@@ -93,6 +93,10 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_capsule(V2::zero(), self.core.delta, self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn segment_core(&self) -> Option<[V2<R>; 2]> {
+        self.core.segment_core()
+    }
 }
 
 /// Ray against the segment `a`-`a + delta` swept by `r` (> 0, as a

@@ -172,6 +172,17 @@ pub trait SupportMap<R: Real> {
     fn small_polygon(&self) -> Option<SmallPolygon<'_, R>> {
         None
     }
+
+    /// The end points of a segment core (a segment's, a capsule's),
+    /// relative to the reference point: against a small polygon, its two
+    /// normals and the polygon's are all the separating axes there are, so
+    /// the test answers most capsule pairs with no iteration. Hosts only,
+    /// as [`small_polygon`](Self::small_polygon).
+    #[doc(hidden)]
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn segment_core(&self) -> Option<[V2<R>; 2]> {
+        None
+    }
 }
 
 /// A polygon core of at most [`SMALL_POLYGON_MAX`] vertices, as
@@ -212,5 +223,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn small_polygon(&self) -> Option<SmallPolygon<'_, R>> {
         (**self).small_polygon()
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn segment_core(&self) -> Option<[V2<R>; 2]> {
+        (**self).segment_core()
     }
 }

@@ -92,6 +92,10 @@ impl<R: Real> SupportMap<R> for Segment<R> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_segment(V2::zero(), self.delta, V2::from_glam(o), V2::from_glam(d), max))
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn segment_core(&self) -> Option<[V2<R>; 2]> {
+        Some([V2::zero(), self.delta])
+    }
 }
 
 /// Ray against the bare segment `a`-`a + delta`. A segment has no inside, so
