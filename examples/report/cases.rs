@@ -38,7 +38,7 @@ impl Sh {
             _ => 1,
         }
     }
-    fn oracle(&self) -> oracle::Shape {
+    pub(crate) fn oracle(&self) -> oracle::Shape {
         match self {
             Sh::Poly(v) => oracle::Shape::Polygon(v.clone()),
             Sh::Circle(c, r) => oracle::Shape::Circle { center: *c, radius: *r },

@@ -3,6 +3,7 @@
 
 use crate::cases::{PairCase, RayTruth, RayVerdict};
 use gjk2d::Status;
+use gjk2d_oracle as oracle;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Query {
@@ -11,6 +12,7 @@ pub(crate) enum Query {
     Penetration,
     Ray,
     Cast,
+    Manifold,
 }
 
 impl Query {
@@ -21,6 +23,7 @@ impl Query {
             Query::Penetration => "penetration",
             Query::Ray => "ray",
             Query::Cast => "cast",
+            Query::Manifold => "manifold",
         }
     }
 }
@@ -31,6 +34,8 @@ pub(crate) enum Out {
     /// Distance (apart) or depth (overlapping) with its normal; None: the other verdict.
     Value(Option<(f64, [f64; 2])>),
     Ray(RayVerdict, f64, [f64; 2]),
+    /// A manifold: its normal and each point on A, on B, and their separation.
+    Manifold([f64; 2], Vec<([f64; 2], [f64; 2], f64)>),
 }
 
 #[derive(Clone, Default, Debug)]
@@ -112,7 +117,43 @@ pub(crate) fn judge_pair(acc: &mut Acc, q: Query, c: &PairCase, eps: f64, out: O
                 }
             }
         }
-        Out::Ray(..) => unreachable!(),
+        Out::Ray(..) | Out::Manifold(..) => unreachable!(),
+    }
+}
+
+/// A contact manifold (speculative margin zero) against the exact pair:
+/// points only where the shapes overlap or touch; its error is the farthest
+/// a point lies off its shape's boundary (exact distances of the points as
+/// given), or the least separation off the exact signed distance, over
+/// `L`; the normal against the exact one.
+pub(crate) fn judge_manifold(acc: &mut Acc, c: &PairCase, eps: f64, out: Out, status: (Status, Option<u32>)) {
+    let Out::Manifold(n, points) = out else { unreachable!() };
+    acc.cases += 1;
+    acc.count_status(status);
+    let judged = c.truth.signed.abs() > 8.0 * eps * c.l;
+    acc.judged += judged as usize;
+    let overlap = c.truth.signed <= 0.0;
+    let says = !points.is_empty();
+    acc.wrong += (judged && says != overlap) as usize;
+    if !says {
+        return;
+    }
+    if !finite2(n) || points.iter().any(|(p, q, s)| !finite2(*p) || !finite2(*q) || !s.is_finite()) {
+        acc.nonfinite += 1;
+        return;
+    }
+    if !overlap {
+        return;
+    }
+    let (ea, eb) = (oracle::ExactShape::from(&c.a.oracle()), oracle::ExactShape::from(&c.b.oracle()));
+    let off = |p: [f64; 2], shape: &oracle::ExactShape| {
+        oracle::pair(&oracle::ExactShape::point(p), shape).signed_distance.abs()
+    };
+    let on_boundaries = points.iter().map(|(p, q, _)| off(*p, &ea).max(off(*q, &eb))).fold(0.0, f64::max);
+    let least = points.iter().map(|p| p.2).fold(f64::INFINITY, f64::min);
+    acc.errs.push(on_boundaries.max((least - c.truth.signed).abs()) / c.l);
+    if judged && c.truth.normal_unique {
+        acc.nerrs.push(angle(n, c.truth.normal));
     }
 }
 

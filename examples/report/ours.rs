@@ -2,7 +2,7 @@
 //! judged, and the batch that times it.
 
 use crate::cases::{Cases, Family, RayVerdict, Sh};
-use crate::judge::{judge_pair, judge_ray, Acc, Out, Query};
+use crate::judge::{judge_manifold, judge_pair, judge_ray, Acc, Out, Query};
 use crate::timing::{time_batches, Batch, Meas, TIMED_CASES};
 use gjk2d::{Capsule, CastOutcome, Circle, Ellipse, Gjk, Motion, Polygon, Ray, RayOutcome, Real, Status, Transform};
 use std::hint::black_box;
@@ -102,6 +102,19 @@ fn g_pair_query<R: Real, const N: usize>(
                 Out::Value(p.map(|s| (s.depth.to_f64(), v2::<R>(s.normal)))),
                 p.map_or((Status::Converged, None), |s| (s.status, Some(s.iterations))),
             )
+        }
+        Query::Manifold => {
+            let m = with_pair!(a, b, |x, y| gjk.manifold(x, &a.t, y, &b.t, R::ZERO)).expect("a valid margin");
+            let n = v2::<R>(m.normal);
+            let points = m
+                .points()
+                .iter()
+                .map(|c| {
+                    let (p, s) = (v2::<R>(c.point), c.separation.to_f64());
+                    (p, [p[0] + s * n[0], p[1] + s * n[1]], s)
+                })
+                .collect();
+            (Out::Manifold(n, points), (m.status, Some(m.iterations)))
         }
         Query::Ray | Query::Cast => unreachable!(),
     }
@@ -207,7 +220,10 @@ pub(crate) fn accuracy_and_batch_g<'a, R: Real, const N: usize>(
         Cases::Pairs(cases) => {
             for (c, (a, b)) in cases.iter().zip(&gf.pairs) {
                 let (out, lim) = g_pair_query(gjk, q, a, b);
-                judge_pair(&mut acc, q, c, eps, out, lim);
+                match q {
+                    Query::Manifold => judge_manifold(&mut acc, c, eps, out, lim),
+                    _ => judge_pair(&mut acc, q, c, eps, out, lim),
+                }
             }
             let batch: Batch<'a> = Box::new(move || {
                 for (a, b) in gf.pairs.iter().take(TIMED_CASES) {
@@ -221,6 +237,9 @@ pub(crate) fn accuracy_and_batch_g<'a, R: Real, const N: usize>(
                         }
                         Query::Penetration => {
                             black_box(with_pair!(a, b, |x, y| gjk.penetration(x, &a.t, y, &b.t)));
+                        }
+                        Query::Manifold => {
+                            black_box(with_pair!(a, b, |x, y| gjk.manifold(x, &a.t, y, &b.t, R::ZERO)).ok());
                         }
                         Query::Ray | Query::Cast => unreachable!(),
                     }

@@ -5,12 +5,12 @@ macro_rules! parry_side {
     ($m:ident, $p:ident, $R:ty) => {
         pub(crate) mod $m {
             use crate::cases::{Cases, Family, RayVerdict, Sh};
-            use crate::judge::{judge_pair, judge_ray, Acc, Out, Query};
+            use crate::judge::{judge_manifold, judge_pair, judge_ray, Acc, Out, Query};
             use crate::timing::{Batch, TIMED_CASES};
             use gjk2d::Status;
             use std::hint::black_box;
             use $p::math::{Pose, Vector};
-            use $p::query::{self, Ray};
+            use $p::query::{self, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, Ray};
             use $p::shape::{Ball, Capsule, ConvexPolygon, Shape};
 
             pub struct PS {
@@ -68,8 +68,30 @@ macro_rules! parry_side {
                         Ok(Some(c)) if c.dist <= 0.0 => Out::Value(Some((-(c.dist as f64), w(c.normal1)))),
                         _ => Out::Value(None),
                     },
+                    Query::Manifold => {
+                        let mut manifolds = Vec::new();
+                        manifold(a, b, &mut manifolds);
+                        let Some(m) = manifolds.iter().find(|m| !m.points.is_empty()) else {
+                            return Out::Manifold([1.0, 0.0], Vec::new());
+                        };
+                        let points = m
+                            .points
+                            .iter()
+                            .filter(|p| p.dist <= 0.0)
+                            .map(|p| (w(a.pos * p.local_p1), w(b.pos * p.local_p2), p.dist as f64))
+                            .collect();
+                        Out::Manifold(w(a.pos.rotation * m.local_n1), points)
+                    }
                     Query::Ray | Query::Cast => unreachable!(),
                 }
+            }
+
+            /// parry's contact manifolds of A and B (margin zero), computed
+            /// cold: `manifolds` cleared, no workspace kept.
+            fn manifold(a: &PS, b: &PS, manifolds: &mut Vec<ContactManifold<(), ()>>) {
+                manifolds.clear();
+                let pos12 = a.pos.inv_mul(&b.pos);
+                let _ = DefaultQueryDispatcher.contact_manifolds(&pos12, &*a.s, &*b.s, 0.0, manifolds, &mut None);
             }
 
             /// B moving by `m` against A: parry's shape cast, its time of
@@ -143,9 +165,14 @@ macro_rules! parry_side {
                 match (&f.cases, pf) {
                     (Cases::Pairs(cases), PFamily::Pairs(shapes)) => {
                         for (c, (a, b)) in cases.iter().zip(shapes) {
-                            judge_pair(&mut acc, q, c, eps, pair_query(q, a, b), (Status::Converged, None));
+                            let out = pair_query(q, a, b);
+                            match q {
+                                Query::Manifold => judge_manifold(&mut acc, c, eps, out, (Status::Converged, None)),
+                                _ => judge_pair(&mut acc, q, c, eps, out, (Status::Converged, None)),
+                            }
                         }
                         let batch: Batch<'a> = Box::new(move || {
+                            let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::with_capacity(1);
                             for (a, b) in shapes.iter().take(TIMED_CASES) {
                                 let (a, b) = (black_box(a), black_box(b));
                                 match q {
@@ -157,6 +184,10 @@ macro_rules! parry_side {
                                     }
                                     Query::Penetration => {
                                         let _ = black_box(query::contact(&a.pos, &*a.s, &b.pos, &*b.s, 0.0));
+                                    }
+                                    Query::Manifold => {
+                                        manifold(a, b, &mut manifolds);
+                                        black_box(&manifolds);
                                     }
                                     Query::Ray | Query::Cast => unreachable!(),
                                 }

@@ -17,8 +17,15 @@ pub(crate) struct Row {
     pub(crate) eps: f64,
 }
 
+/// The families whose contact manifolds are measured: polygons, and a
+/// circle or a capsule against one, as parry's `contact_manifolds` has them.
+const MANIFOLD_FAMILIES: [&str; 4] = ["poly8", "poly64", "circle_poly", "capsule_poly"];
+
 fn queries_of(f: &Family) -> &'static [Query] {
     match f.cases {
+        Cases::Pairs(_) if MANIFOLD_FAMILIES.contains(&f.name.as_str()) => {
+            &[Query::Intersect, Query::Penetration, Query::Distance, Query::Manifold]
+        }
         Cases::Pairs(_) => &[Query::Intersect, Query::Penetration, Query::Distance],
         Cases::Rays(_) => &[Query::Ray],
         Cases::Casts(_) => &[Query::Cast],
