@@ -252,6 +252,7 @@ macro_rules! property_suite {
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).ok()?),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).ok()?),
                     Geo::Segment(a, b) => Box::new(Segment::new(v(*a), v(*b)).ok()?),
+                    Geo::Rounded(p, r) => Box::new(Rounded::new(Polygon::<R, 16>::new(&p.iter().map(|&q| v(q)).collect::<Vec<_>>()).ok()?, *r as R).ok()?),
                 })
             }
 

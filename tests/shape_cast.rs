@@ -145,11 +145,15 @@ fn family_shape(rng: &mut Rng, family: &str, s: f64) -> Geo {
         "triangle" => Geo::Poly(ellipse_polygon(rng, 3, a, b)),
         "circle" => Geo::Circle([0.0, 0.0], r32(a)),
         "capsule" => Geo::Capsule([r32(-a), 0.0], [r32(a), 0.0], r32(0.5 * b)),
+        "rounded" => {
+            let n = 3 + (rng.next() % 6) as usize;
+            Geo::Rounded(ellipse_polygon(rng, n, 0.7 * a, 0.7 * b), r32(0.3 * b))
+        }
         _ => Geo::Segment([r32(-a), r32(-0.1 * b)], [r32(a), r32(0.1 * b)]),
     }
 }
 
-const FAMILIES: [&str; 6] = ["polygon", "rectangle", "triangle", "circle", "capsule", "segment"];
+const FAMILIES: [&str; 7] = ["polygon", "rectangle", "triangle", "circle", "capsule", "segment", "rounded"];
 
 fn config() -> ProptestConfig {
     let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x6361_7374);
@@ -188,6 +192,7 @@ macro_rules! cast_suite {
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).ok()?),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).ok()?),
                     Geo::Segment(a, b) => Box::new(Segment::new(v(*a), v(*b)).ok()?),
+                    Geo::Rounded(p, r) => Box::new(Rounded::new(Polygon::<R, 16>::new(&p.iter().map(|&q| v(q)).collect::<Vec<_>>()).ok()?, *r as R).ok()?),
                 })
             }
 
@@ -720,7 +725,7 @@ macro_rules! cast_suite {
             proptest! {
                 #![proptest_config(config())]
                 #[test]
-                fn random_casts(fa in 0usize..6, fb in 0usize..6, seed in any::<u64>(), scale in -3.0f64..3.0, far in prop_oneof![Just(0.0), 1.0f64..1e4], aim in 0.0f64..3.0, reach in 0.0f64..2.0) {
+                fn random_casts(fa in 0usize..FAMILIES.len(), fb in 0usize..FAMILIES.len(), seed in any::<u64>(), scale in -3.0f64..3.0, far in prop_oneof![Just(0.0), 1.0f64..1e4], aim in 0.0f64..3.0, reach in 0.0f64..2.0) {
                     let mut rng = Rng(seed);
                     let s = 2f64.powf(scale);
                     let at = [far, -0.5 * far];

@@ -109,6 +109,7 @@ macro_rules! stiff_suite {
                     Geo::Circle(c, r) => Geo::Circle(m(c), *r),
                     Geo::Capsule(a, b, r) => Geo::Capsule(m(a), m(b), *r),
                     Geo::Segment(a, b) => Geo::Segment(m(a), m(b)),
+                    Geo::Rounded(vs, r) => Geo::Rounded(vs.iter().map(m).collect(), *r),
                 }
             }
 
@@ -125,6 +126,10 @@ macro_rules! stiff_suite {
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R)?),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R)?),
                     Geo::Segment(a, b) => Box::new(Segment::new(v(*a), v(*b))?),
+                    Geo::Rounded(pts, r) => {
+                        let pts: Vec<$vec> = pts.iter().map(|&p| v(p)).collect();
+                        Box::new(Rounded::new(Polygon::<R, 16>::new(&pts)?, *r as R)?)
+                    }
                 })
             }
 

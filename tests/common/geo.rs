@@ -45,6 +45,8 @@ pub enum Geo {
     Circle(Pt, f64),
     Capsule(Pt, Pt, f64),
     Segment(Pt, Pt),
+    /// A polygon swept by a radius.
+    Rounded(Vec<Pt>, f64),
 }
 
 impl Geo {
@@ -54,11 +56,12 @@ impl Geo {
             Geo::Circle(c, r) => Shape::Circle { center: *c, radius: *r },
             Geo::Capsule(a, b, r) => Shape::Capsule { a: *a, b: *b, radius: *r },
             Geo::Segment(a, b) => Shape::Capsule { a: *a, b: *b, radius: 0.0 },
+            Geo::Rounded(v, r) => Shape::RoundedPolygon { vertices: v.clone(), radius: *r },
         }
     }
     pub fn core(&self) -> Vec<Pt> {
         match self {
-            Geo::Poly(v) => v.clone(),
+            Geo::Poly(v) | Geo::Rounded(v, _) => v.clone(),
             Geo::Circle(c, _) => vec![*c],
             Geo::Capsule(a, b, _) | Geo::Segment(a, b) => vec![*a, *b],
         }
@@ -66,7 +69,7 @@ impl Geo {
     pub fn radius(&self) -> f64 {
         match self {
             Geo::Poly(_) | Geo::Segment(..) => 0.0,
-            Geo::Circle(_, r) | Geo::Capsule(_, _, r) => *r,
+            Geo::Circle(_, r) | Geo::Capsule(_, _, r) | Geo::Rounded(_, r) => *r,
         }
     }
     /// Largest local coordinate magnitude, radius included.
