@@ -15,7 +15,7 @@ use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 use crate::shape::SupportMap;
-use crate::simplex::{Simplex, Vertex, Witness};
+use crate::simplex::{Payload, Simplex, Vertex, Witness};
 use crate::transform::Transform;
 
 /// The narrow-phase detector: configuration plus a penetration solver (EPA
@@ -263,14 +263,10 @@ impl<R: Real, P> Gjk<R, P> {
         if margin < R::ZERO || margin > R::MAX_COORDINATE {
             return Err(Error::OutOfRange);
         }
-        let (normal, separation, iterations, status) = match in_own_frame(|| self.distance(a, ta, b, tb)) {
-            Some(s) => (s.normal, s.distance, s.iterations, s.status),
-            None => match in_own_frame(|| self.penetration(a, ta, b, tb)) {
-                Some(p) => (p.normal, -p.depth, p.iterations, p.status),
-                // Touching to the one query, apart to the other: no point
-                // either would vouch for.
-                None => return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged)),
-            },
+        let Some((normal, separation, iterations, status)) = in_own_frame(|| self.contact(a, ta, b, tb)) else {
+            // Touching to the one query, apart to the other: no point
+            // either would vouch for.
+            return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
         };
         let mut manifold = Manifold::empty(normal, iterations, status);
         if separation <= margin {
@@ -278,6 +274,69 @@ impl<R: Real, P> Gjk<R, P> {
             in_own_frame(|| crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold));
         }
         Ok(manifold)
+    }
+
+    /// What a manifold starts from: the distance query's normal and
+    /// distance when the shapes are apart, else the penetration query's
+    /// normal and depth (negated), with that query's iterations and status.
+    /// The same answers as the two queries asked in turn, but GJK runs once:
+    /// its simplex, enclosing the origin, goes on to the penetration solver.
+    fn contact<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Contact<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        let apart = |s: Separation<R>| (s.normal, s.distance, s.iterations, s.status);
+        let overlapping = |p: Penetration<R>| (p.normal, -p.depth, p.iterations, p.status);
+        let pair = Pair::new(a, ta, b, tb);
+        if pair.point_cores() {
+            if let Some(ref core) = PointCores::new(&pair) {
+                if !core.certainly_within(pair.radius_a() + pair.radius_b()) {
+                    if let Some(s) = separation(&pair, &core.separation()) {
+                        return Some(apart(s));
+                    }
+                }
+                return rounded_overlap(&pair, &core.separation()).map(overlapping);
+            }
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
+            if let Some(near) = crate::point_polygon::nearest(polygon, p) {
+                if let Some(s) = point_polygon_separation(&pair, near, point_is_a) {
+                    return Some(apart(s));
+                }
+                if P::SEPARATING_AXES {
+                    return point_polygon_penetration(&pair, near, point_is_a).map(overlapping);
+                }
+            }
+        }
+        match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            CoreContact::Apart(s) => Some(apart(s)),
+            CoreContact::Resolved(p) => p.map(overlapping),
+            CoreContact::Overlapping(ref enclosing) => {
+                #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+                if P::SEPARATING_AXES {
+                    if let Some((pa, pb)) = pair.small_polygons() {
+                        let (depth, normal) = crate::sat::Axes::new(&pair, pa, pb).penetration();
+                        return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                    }
+                    if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
+                        if let RoundedAxes::Overlapping(depth, normal) = rounded_axes(&pair, axes) {
+                            return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                        }
+                    }
+                }
+                let estimate = self.solver.solve(&pair, enclosing.points());
+                Some(overlapping(Penetration {
+                    normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
+                    depth: estimate.depth + pair.radius(),
+                    error_bound: estimate.error_bound,
+                    iterations: enclosing.iterations + estimate.iterations,
+                    status: estimate.status,
+                }))
+            }
+        }
     }
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
@@ -683,15 +742,65 @@ where
     // serves both queries. Elsewhere nothing: a smaller simplex is a faster
     // one.
     #[cfg(target_os = "none")]
-    let mut simplex = None::<Simplex<R, Witness<R>>>;
+    let gjk = core_gjk::<R, A, B, Witness<R>, _>(pair, max_iterations, epsilon, |core| rounded_overlap(pair, core));
     #[cfg(not(target_os = "none"))]
-    let mut simplex = None::<Simplex<R, ()>>;
-    match pair.core_distance(&mut simplex, max_iterations, epsilon) {
-        CoreProximity::Overlapping { simplex, iterations } => {
-            Proximity::Overlapping(Enclosing::from_simplex(simplex, iterations))
-        }
-        CoreProximity::Separated(ref core) => Proximity::Resolved(rounded_overlap(pair, core)),
+    let gjk = core_gjk::<R, A, B, (), _>(pair, max_iterations, epsilon, |core| rounded_overlap(pair, core));
+    match gjk {
+        Err(enclosing) => Proximity::Overlapping(enclosing),
+        Ok(penetration) => Proximity::Resolved(penetration),
     }
+}
+
+/// GJK on the cores: `apart` of their separation where they are apart,
+/// else the simplex that encloses the origin.
+#[inline(always)]
+fn core_gjk<R, A, B, W, T>(
+    pair: &Pair<'_, R, A, B>,
+    max_iterations: u32,
+    epsilon: R,
+    apart: impl FnOnce(&CoreSeparation<'_, R, W>) -> T,
+) -> Result<T, Enclosing<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+    W: Payload<R>,
+{
+    let mut simplex = None::<Simplex<R, W>>;
+    match pair.core_distance(&mut simplex, max_iterations, epsilon) {
+        CoreProximity::Overlapping { simplex, iterations } => Err(Enclosing::from_simplex(simplex, iterations)),
+        CoreProximity::Separated(ref core) => Ok(apart(core)),
+    }
+}
+
+/// The manifold's normal, least separation, iterations and status.
+type Contact<R> = (<R as Real>::Vector, R, u32, Status);
+
+/// What the manifold's GJK run leaves: the separation of shapes apart, the
+/// penetration of rounded shapes whose cores are apart, or the simplex that
+/// encloses the origin for the solver.
+enum CoreContact<R: Real> {
+    Apart(Separation<R>),
+    Resolved(Option<Penetration<R>>),
+    Overlapping(Enclosing<R>),
+}
+
+/// GJK for the manifold's normal: [`core_proximity`] with the distance
+/// query's witness points, so shapes apart get their separation. Not
+/// inlined on bare metal, for the same reason.
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline(always))]
+fn core_contact<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreContact<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let separated = |core: &CoreSeparation<'_, R, Witness<R>>| match separation(pair, core) {
+        Some(s) => CoreContact::Apart(s),
+        None => CoreContact::Resolved(rounded_overlap(pair, core)),
+    };
+    core_gjk(pair, max_iterations, epsilon, separated).unwrap_or_else(CoreContact::Overlapping)
 }
 
 /// The penetration of rounded shapes whose cores are apart, in closed form

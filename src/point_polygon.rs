@@ -13,6 +13,7 @@ const M: usize = SMALL_POLYGON_MAX;
 
 /// Where a point is relative to a convex polygon, with the polygon's outward
 /// unit normal at its nearest feature.
+#[derive(Clone, Copy)]
 pub(crate) enum Nearest<R> {
     /// Outside (or on the boundary, at distance 0): the distance, the unit
     /// normal from the polygon towards the point, and the nearest point.
