@@ -24,6 +24,8 @@
 //! All in the pair frame (A's frame, relative to its reference point), as
 //! every query works: shapes far from the origin keep their precision.
 
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::minkowski::Corners;
 use crate::minkowski::Pair;
 use crate::real::{Real, V2};
 use crate::result::{ContactPoint, Feature, FeatureId, Manifold};
@@ -90,7 +92,15 @@ impl<R: Real> Side<R> {
     /// support vertex whose normal is nearest `facing`, if within 60
     /// degrees of it (a steeper edge is only met at its corner, which is
     /// then the one point), for polytope cores.
-    fn new(support: impl Fn(V2<R>) -> (V2<R>, u32), facing: V2<R>, radius: R, polytope: bool) -> Self {
+    /// `lent` gives the edge at a vertex (by id, either way round) where
+    /// the core's vertices are at hand, `None` where they are not.
+    fn new(
+        support: impl Fn(V2<R>) -> (V2<R>, u32),
+        facing: V2<R>,
+        radius: R,
+        polytope: bool,
+        lent: impl Fn(u32, bool) -> Option<Option<Face<R>>>,
+    ) -> Self {
         let (v, id) = support(facing);
         let mut side = Self { facing, radius, support: v, support_id: id, face: None };
         if !polytope || id == NO_FEATURE {
@@ -98,7 +108,7 @@ impl<R: Real> Side<R> {
         }
         let mut best = R::HALF;
         for ccw in [true, false] {
-            if let Some(face) = neighbour(&support, v, id, facing, ccw) {
+            if let Some(face) = lent(id, ccw).unwrap_or_else(|| neighbour(&support, v, id, facing, ccw)) {
                 let cos = face.normal.dot(facing);
                 if cos > best {
                     best = cos;
@@ -213,6 +223,48 @@ fn neighbour<R: Real>(
     Some(Face { other: w, other_id: wid, normal, ccw })
 }
 
+/// The edge at vertex `id` of a core whose vertices are at hand, on its
+/// counter-clockwise (`ccw`) or clockwise side: the next vertex that way,
+/// or the last of a run of them on one line (within `4 eps` of its length,
+/// as [`along_line`] takes them), so that the face is the whole edge.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+fn lent_face<R: Real>(corners: &Corners<R>, id: u32, ccw: bool) -> Option<Face<R>> {
+    let n = corners.len;
+    let i = id as usize;
+    if i >= n || n < 2 {
+        return None;
+    }
+    let step = |k: usize| {
+        if ccw {
+            if k + 1 == n {
+                0
+            } else {
+                k + 1
+            }
+        } else if k == 0 {
+            n - 1
+        } else {
+            k - 1
+        }
+    };
+    let at = |k: usize| corners.v.get(k).copied().unwrap_or_default();
+    let v = at(i);
+    let mut j = step(i);
+    for _ in 0..n {
+        let k = step(j);
+        let (e, f) = (at(j) - v, at(k) - v);
+        let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
+        if k == i || e.cross(f).abs() > slack || e.dot(f) <= e.length_squared() {
+            break;
+        }
+        j = k;
+    }
+    let w = at(j);
+    let chord = if ccw { w - v } else { v - w };
+    let normal = chord.perp_cw().try_normalize()?;
+    Some(Face { other: w, other_id: j as u32, normal, ccw })
+}
+
 /// The last vertex on the line from `from` through `end` (with its id),
 /// beyond `end`: the support along the face's `normal` turned a little
 /// (1/1024) towards that side, which among the vertices on the line is the
@@ -247,8 +299,17 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let (polytope_a, polytope_b) = pair.polytopes();
-    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a);
-    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b);
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    let (corners_a, corners_b) = (pair.corners_a(), pair.corners_b());
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    let (lent_a, lent_b) = (
+        |id: u32, ccw: bool| corners_a.as_ref().map(|c| lent_face(c, id, ccw)),
+        |id: u32, ccw: bool| corners_b.as_ref().map(|c| lent_face(c, id, ccw)),
+    );
+    #[cfg(any(target_os = "none", target_family = "wasm"))]
+    let (lent_a, lent_b) = (|_: u32, _: bool| None, |_: u32, _: bool| None);
+    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a, lent_a);
+    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b, lent_b);
     let tangent = normal.perp();
     let along = |e: &End<R>| e.point.dot(tangent);
     // Each side's interval, its lower end first; then the overlap, the

@@ -257,6 +257,25 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some((b.segment_core()?, a.small_polygon()?.vertices, false))
     }
 
+    /// A's core vertices in the pair frame, where A lends them (a small
+    /// polygon, a segment core) and both types are known when the program
+    /// is compiled: a contact manifold then finds a support vertex's edges
+    /// by index instead of by asking the support function around it.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn corners_a(&self) -> Option<Corners<R>> {
+        let a: &'s A = self.a;
+        Self::shapes_known().then(|| Corners::lent(a, |p| p)).flatten()
+    }
+
+    /// B's, as [`corners_a`](Self::corners_a) gives A's.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn corners_b(&self) -> Option<Corners<R>> {
+        let b: &'s B = self.b;
+        Self::shapes_known().then(|| Corners::lent(b, |p| self.b_to_pair(p))).flatten()
+    }
+
     /// A point core (a circle's centre) and a small polygon, where both
     /// shapes' types are known when the program is compiled: the point in
     /// the polygon's frame, the polygon's vertices, and whether the point is
@@ -334,5 +353,29 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     }
     fn is_polytope(&self) -> bool {
         self.a.is_polytope() && self.b.is_polytope()
+    }
+}
+
+/// A polytope core's vertices (at most [`SMALL_POLYGON_MAX`]) placed in the
+/// pair frame, counter-clockwise, indexed by their support ids.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[derive(Clone, Copy)]
+pub(crate) struct Corners<R> {
+    pub v: [V2<R>; crate::polytope::SMALL_POLYGON_MAX],
+    pub len: usize,
+}
+
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+impl<R: Real> Corners<R> {
+    fn lent<S: SupportMap<R> + ?Sized>(shape: &S, place: impl Fn(V2<R>) -> V2<R>) -> Option<Self> {
+        const M: usize = crate::polytope::SMALL_POLYGON_MAX;
+        let segment = shape.segment_core();
+        let vertices: &[V2<R>] = match (&segment, shape.small_polygon()) {
+            (Some(ends), _) => ends,
+            (None, Some(polygon)) => polygon.vertices,
+            (None, None) => return None,
+        };
+        let len = vertices.len().min(M);
+        Some(Self { v: core::array::from_fn(|i| vertices.get(i).map_or(V2::zero(), |&p| place(p))), len })
     }
 }

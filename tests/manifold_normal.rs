@@ -18,22 +18,21 @@ macro_rules! suite {
         #[test]
         fn $name() {
             type R = $r;
+            /// A near the origin, B within a few sizes of it, both turned.
+            fn placements(rng: &mut Rng) -> (Transform<R>, Transform<R>) {
+                let mut at = |reach: f64| {
+                    let t = $vec::new(rng.range(-reach, reach) as R, rng.range(-reach, reach) as R);
+                    Transform::<R>::new(t, rng.range(-4.0, 4.0) as R).unwrap()
+                };
+                (at(1.0), at(3.0))
+            }
             fn check<A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
                 gjk: &Gjk<R>,
                 a: &A,
                 b: &B,
                 rng: &mut Rng,
             ) -> bool {
-                let ta = Transform::<R>::new(
-                    $vec::new(rng.range(-1.0, 1.0) as R, rng.range(-1.0, 1.0) as R),
-                    rng.range(-4.0, 4.0) as R,
-                )
-                .unwrap();
-                let tb = Transform::<R>::new(
-                    $vec::new(rng.range(-3.0, 3.0) as R, rng.range(-3.0, 3.0) as R),
-                    rng.range(-4.0, 4.0) as R,
-                )
-                .unwrap();
+                let (ta, tb) = placements(rng);
                 let m = gjk.manifold(a, &ta, b, &tb, 0.25).unwrap();
                 let want = match gjk.distance(a, &ta, b, &tb) {
                     Some(s) => Some((s.normal, s.distance, s.iterations, s.status)),
@@ -52,6 +51,21 @@ macro_rules! suite {
                     assert!((least - separation).abs() <= tol, "{m:?}: least {least}, the query's {separation}");
                 }
                 separation <= 0.0
+            }
+            /// The same pair through concrete types (their vertices at hand
+            /// on hosts) and through `dyn` (the support function asked
+            /// round each vertex): where the two normals agree, the same
+            /// manifold to the bit. Whether they agreed.
+            fn same_faces<A: SupportMap<R>, B: SupportMap<R>>(gjk: &Gjk<R>, a: &A, b: &B, rng: &mut Rng) -> bool {
+                let (ta, tb) = placements(rng);
+                let (da, db): (&dyn SupportMap<R>, &dyn SupportMap<R>) = (a, b);
+                let (lent, asked) =
+                    (gjk.manifold(a, &ta, b, &tb, 0.5).unwrap(), gjk.manifold(da, &ta, db, &tb, 0.5).unwrap());
+                if lent.normal != asked.normal {
+                    return false;
+                }
+                assert_eq!(lent.points(), asked.points(), "{ta:?} {tb:?}");
+                true
             }
             let v = |x: f64, y: f64| $vec::new(x as R, y as R);
             let octagon: Vec<_> = (0..8)
@@ -88,6 +102,34 @@ macro_rules! suite {
                 "{overlapping} of {} overlapping",
                 10 * n
             );
+            let mut agreed = 0;
+            for _ in 0..n {
+                agreed += same_faces(&gjk, &p8, &p8, &mut rng) as u32;
+                agreed += same_faces(&gjk, &capsule, &p8, &mut rng) as u32;
+                agreed += same_faces(&gjk, &p8, &segment, &mut rng) as u32;
+                agreed += same_faces(
+                    &gjk,
+                    &Triangle::<R>::new(v(-1.0, -0.5), v(1.0, -0.4), v(0.1, 1.0)).unwrap(),
+                    &p8,
+                    &mut rng,
+                ) as u32;
+            }
+            assert!(agreed > n, "{agreed} of {} pairs with the same normal both ways", 4 * n);
+            // Faces resting on faces, where both ends of the overlap come
+            // from the faces' far vertices and name them.
+            let square =
+                Polygon::<R, 8>::new(&[v(-1.0, -1.0), v(0.0, -1.0), v(1.0, -1.0), v(1.0, 1.0), v(-1.0, 1.0)]).unwrap();
+            for k in 0..64 {
+                let tb =
+                    Transform::<R>::new(v(k as f64 / 24.0 - 1.3, 1.99 - k as f64 * 1e-4), 1e-4 * (k % 5) as R).unwrap();
+                let (da, db): (&dyn SupportMap<R>, &dyn SupportMap<R>) = (&square, &square);
+                let lent = gjk.manifold(&square, &Transform::IDENTITY, &square, &tb, 0.1).unwrap();
+                let asked = gjk.manifold(da, &Transform::IDENTITY, db, &tb, 0.1).unwrap();
+                assert_eq!(lent.points().len(), 2, "{lent:?}");
+                if lent.normal == asked.normal {
+                    assert_eq!(lent.points(), asked.points(), "{tb:?}");
+                }
+            }
         }
     };
 }
