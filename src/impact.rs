@@ -14,9 +14,10 @@
 
 use crate::config::ImpactConfig;
 use crate::error::Error;
+use crate::manifold::facing_features;
 use crate::minkowski::Pair;
 use crate::real::{Real, V2};
-use crate::result::{Penetration, Separation, Status};
+use crate::result::{FeatureId, Penetration, Separation, Status};
 use crate::shape::SupportMap;
 use crate::transform::{check_point, Transform};
 
@@ -150,6 +151,11 @@ pub struct Impact<R: Real> {
     pub point_a: R::Vector,
     /// The closest point on B at `time`.
     pub point_b: R::Vector,
+    /// The features that face each other there, as a contact manifold
+    /// names them: a face within 2.5 degrees of the normal, else the
+    /// vertex nearest the other shape (on a rounded shape, the arc around
+    /// it; [`Feature::Curve`](crate::Feature::Curve) on a curved core).
+    pub features: FeatureId,
 }
 
 /// Shapes closer than the target at the start.
@@ -210,16 +216,18 @@ where
     loop {
         let (ta, tb) = (sweep_a.transform_at(t), sweep_b.transform_at(t));
         iterations += 1;
-        let done = |t: R, sep: &Separation<R>, status| TimeOfImpact {
-            outcome: ImpactOutcome::Hit(Impact {
+        let done = |t: R, sep: &Separation<R>, status| {
+            let (ta, tb) = (sweep_a.transform_at(t), sweep_b.transform_at(t));
+            let normal = ta.inverse_rotate(V2::from_glam(sep.normal));
+            let hit = Impact {
                 time: t,
                 separation: sep.distance,
                 normal: sep.normal,
                 point_a: sep.point_a,
                 point_b: sep.point_b,
-            }),
-            iterations,
-            status,
+                features: facing_features(&Pair::new(a, &ta, b, &tb), normal),
+            };
+            TimeOfImpact { outcome: ImpactOutcome::Hit(hit), iterations, status }
         };
         let Some(sep) = distance(&ta, &tb) else {
             return match last {

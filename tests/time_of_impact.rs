@@ -354,6 +354,38 @@ macro_rules! toi_suite {
                 assert!(compared > 50);
             }
 
+            /// The features that touch at the hit: a corner on a face, two
+            /// faces, a circle, a spinning plank's corner on a wall.
+            #[test]
+            fn features_at_the_hit() {
+                let mut worst = Worst::default();
+                let config = ImpactConfig::new(0.01, 0.001).unwrap();
+                let diamond = Geo::Poly(vec![[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]]);
+                let falling = |x: f64| {
+                    let start = Transform::from_translation(v([x, 5.0])).unwrap();
+                    Sweep::translation(&start, v([0.0, -6.0])).unwrap()
+                };
+                let cases = [
+                    (diamond, FeatureId { a: Feature::Edge(2), b: Feature::Vertex(0) }),
+                    (square(), FeatureId { a: Feature::Edge(2), b: Feature::Edge(0) }),
+                    // A circle's core is one point: its vertex 0, as the manifold names it.
+                    (Geo::Circle([0.0, 0.0], 0.5), FeatureId { a: Feature::Edge(2), b: Feature::Vertex(0) }),
+                ];
+                for (shape, features) in cases {
+                    let toi = check(&square(), &fixed([0.0, 0.0]), &shape, &falling(0.25), &config, 16, &mut worst, "features");
+                    assert_eq!(toi.hit().map(|h| h.features), Some(features), "{toi:?}");
+                }
+                let upright = std::f64::consts::FRAC_PI_2 as R;
+                let start = Transform::new(v([-1.5, 0.0]), upright).unwrap();
+                let turn = Sweep::new(&start, v([0.0, 0.0]), v([0.0, 0.0]), -2.0).unwrap();
+                let toi = check(&wall(), &fixed([0.0, 0.0]), &plank(), &turn, &config, 16, &mut worst, "features");
+                let hit = toi.hit().expect("a hit");
+                // The wall's left face (from its vertex 3 down to 0, counter-clockwise
+                // from 3), and one of the plank's corners.
+                assert_eq!(hit.features.a, Feature::Edge(3), "{toi:?}");
+                assert!(matches!(hit.features.b, Feature::Vertex(_)), "{toi:?}");
+            }
+
             /// Every bad input is a typed error; a wild time is clamped.
             #[test]
             fn bad_input() {
