@@ -16,6 +16,7 @@
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
+use gjk2d_oracle::curved::{curved_pair, Local, Placed};
 use gjk2d_oracle::{pair, transform_shape};
 
 #[path = "common/geo.rs"]
@@ -384,6 +385,64 @@ macro_rules! toi_suite {
                 // from 3), and one of the plank's corners.
                 assert_eq!(hit.features.a, Feature::Edge(3), "{toi:?}");
                 assert!(matches!(hit.features.b, Feature::Vertex(_)), "{toi:?}");
+            }
+
+            /// Ellipses turning and moving against each other, against the
+            /// oracle's branch and bound for curved shapes: the same
+            /// property, within its error and the distance query's
+            /// relative epsilon on top of rounding.
+            #[test]
+            fn ellipses() {
+                let mut rng = Rng(11);
+                let gjk = Gjk::<R>::new();
+                let (mut hits, mut misses, mut most) = (0, 0, 0);
+                for _ in 0..cases(100) {
+                    let (wa, ha, wb, hb) = (round(rng.range(0.5, 3.0)), round(rng.range(0.2, 2.0)), round(rng.range(0.5, 3.0)), round(rng.range(0.2, 2.0)));
+                    let (a, b) = (Ellipse::<R>::new(wa as R, ha as R).unwrap(), Ellipse::<R>::new(wb as R, hb as R).unwrap());
+                    let sa = random_sweep(&mut rng, [0.0, 0.0], 1.0, 3.0);
+                    let at = [rng.range(-5.0, 5.0), rng.range(-5.0, 5.0)];
+                    let towards = [-at[0] + rng.range(-2.0, 2.0), -at[1] + rng.range(-2.0, 2.0)];
+                    let start = Transform::new(v(at), rng.range(-3.0, 3.0) as R).unwrap();
+                    let sb = Sweep::new(&start, v([0.0, 0.0]), v(towards), rng.range(-3.0, 3.0) as R).unwrap();
+                    let config = ImpactConfig::new(0.01, 1e-3).unwrap();
+                    let toi = gjk.time_of_impact(&a, &sa, &b, &sb, &config);
+                    most = most.max(toi.iterations);
+                    // The exact distance at `t` lies within [lo, hi].
+                    let exact = |t: R| {
+                        let place = |w: f64, h: f64, s: &Sweep<R>| {
+                            let tf = s.transform_at(t);
+                            Placed::new(Local::Ellipse { a: 0.5 * w, b: 0.5 * h }, tf.cos() as f64, tf.sin() as f64, pt(tf.translation()))
+                        };
+                        let e = curved_pair(&place(wa, ha, &sa), &place(wb, hb, &sb), 1e-15);
+                        (e.signed - e.error, e.signed + e.error)
+                    };
+                    let slack = 16.0 * EPS * 20.0;
+                    let floor = |t: R| {
+                        let (_, hi) = exact(t);
+                        assert!(hi >= 0.01 - slack, "distance {hi} at {t}: {toi:?}");
+                    };
+                    match toi.outcome {
+                        ImpactOutcome::Hit(h) => {
+                            for k in 0..=32 {
+                                floor(h.time * (k as R / 32.0));
+                            }
+                            if toi.status.is_converged() {
+                                hits += 1;
+                                let (lo, _) = exact(h.time);
+                                assert!(lo <= 0.011 + slack, "distance {lo} above the band: {toi:?}");
+                            }
+                        }
+                        ImpactOutcome::Miss => {
+                            misses += 1;
+                            for k in 0..=64 {
+                                floor(k as R / 64.0);
+                            }
+                        }
+                        ImpactOutcome::Start(_) => assert!(exact(0.0).0 < 0.01 + slack, "{toi:?}"),
+                    }
+                }
+                println!("{} ellipses: {hits} hits, {misses} misses, at most {most} iterations", stringify!($modname));
+                assert!(hits > 20 && misses > 10);
             }
 
             /// Every bad input is a typed error; a wild time is clamped.
