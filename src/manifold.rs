@@ -53,13 +53,6 @@ fn edge(start: u32) -> Feature {
     }
 }
 
-/// How closely a face must follow the normal to count as flat against the
-/// other shape: within 2.5 degrees, as in resting contact.
-#[inline(always)]
-fn flat<R: Real>() -> R {
-    R::ONE - R::ONE / R::from_u32(1024)
-}
-
 /// An edge of a core at its support vertex.
 #[derive(Clone, Copy)]
 struct Face<R> {
@@ -121,7 +114,7 @@ impl<R: Real> Side<R> {
         // each end. (The support vertex can only move when the face is
         // exactly at right angles: a vertex beyond it on the line would be
         // farther along `facing`.)
-        let flat = flat();
+        let flat = R::ONE - R::ONE / R::from_u32(1024);
         if let Some(face) = side.face.as_mut().filter(|face| face.normal.dot(facing) >= flat) {
             (face.other, face.other_id) = along_line(&support, v, (face.other, face.other_id), face.normal);
             (side.support, side.support_id) = along_line(&support, face.other, (v, id), face.normal);
@@ -135,9 +128,11 @@ impl<R: Real> Side<R> {
     }
 
     /// The feature that faces the other shape: the face when it is flat to
-    /// `facing`, else the support vertex (or the curve).
+    /// `facing` (within 2.5 degrees, as [`new`](Self::new) looks for a
+    /// face's far end), else the support vertex (or the curve).
     fn facing_feature(&self) -> Feature {
-        match self.face.filter(|face| face.normal.dot(self.facing) >= flat()) {
+        let flat = R::ONE - R::ONE / R::from_u32(1024);
+        match self.face.filter(|face| face.normal.dot(self.facing) >= flat) {
             Some(face) => self.edge(&face),
             None => vertex(self.support_id),
         }
@@ -253,21 +248,6 @@ fn along_line<R: Real>(
     (q, qid)
 }
 
-/// A's side facing B along `normal` (in the pair frame, from A towards
-/// B), and B's facing A.
-#[inline(always)]
-fn sides<R, A, B>(pair: &Pair<'_, R, A, B>, normal: V2<R>) -> (Side<R>, Side<R>)
-where
-    R: Real,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    let (polytope_a, polytope_b) = pair.polytopes();
-    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a);
-    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b);
-    (a, b)
-}
-
 /// The manifold's points of a pair whose normal (in the pair frame, from A
 /// towards B) the distance or penetration query gave: those whose
 /// separation is at most `margin`, added to `out`.
@@ -277,7 +257,9 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let (a, b) = sides(pair, normal);
+    let (polytope_a, polytope_b) = pair.polytopes();
+    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a);
+    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b);
     let tangent = normal.perp();
     let along = |e: &End<R>| e.point.dot(tangent);
     // Each side's interval, its lower end first; then the overlap, the
@@ -344,6 +326,10 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let (a, b) = sides(pair, normal);
-    FeatureId { a: a.facing_feature(), b: b.facing_feature() }
+    let (polytope_a, polytope_b) = pair.polytopes();
+    let feature = |side: Side<R>| side.facing_feature();
+    FeatureId {
+        a: feature(Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a)),
+        b: feature(Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b)),
+    }
 }
