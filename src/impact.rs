@@ -247,18 +247,26 @@ where
         }
         let n = V2::from_glam(sep.normal);
         let gap = gap_along(a, &ta, b, &tb, n).min(sep.distance);
-        // How fast the gap along `n` can close, a little over for rounding.
-        let closing = (spin - relative.dot(n)) * (R::ONE + R::from_u32(8) * R::EPSILON);
-        if closing <= R::ZERO {
-            return TimeOfImpact { outcome: ImpactOutcome::Miss, iterations, status: Status::Converged };
-        }
-        let step = (gap - target) / closing;
-        if step <= R::ZERO || iterations >= config.max_iterations() {
+        // How fast the gap along `n` can close, over by its rounding (which
+        // the difference may cancel down to).
+        let rounding = R::from_u32(8) * R::EPSILON * (spin + relative.x.abs() + relative.y.abs());
+        let closing = spin - relative.dot(n) + rounding;
+        let miss = TimeOfImpact { outcome: ImpactOutcome::Miss, iterations, status: Status::Converged };
+        // No gap beyond the target along this normal (a normal iterated to
+        // a tolerance wider than the caller's): no step can be proved safe.
+        if gap <= target {
             return done(t, &sep, Status::IterationLimit);
         }
-        let next = t + step;
+        // The gap never closes to the target: not within the step either.
+        if closing <= R::ZERO {
+            return miss;
+        }
+        let next = t + (gap - target) / closing;
         if next > R::ONE {
-            return TimeOfImpact { outcome: ImpactOutcome::Miss, iterations, status: Status::Converged };
+            return miss;
+        }
+        if iterations >= config.max_iterations() {
+            return done(t, &sep, Status::IterationLimit);
         }
         last = Some((t, sep));
         t = next;

@@ -300,6 +300,10 @@ macro_rules! toi_suite {
                 let config = ImpactConfig::new(0.01, 0.001).unwrap();
                 let toi = check(&square, &fixed([0.0, 0.0]), &square, &fixed([3.0, 0.0]), &config, 8, &mut worst, "still");
                 assert_eq!(toi.outcome, ImpactOutcome::Miss);
+                // Moving away without turning: the gap never closes, one look.
+                let away = Sweep::translation(&Transform::from_translation(v([3.0, 0.0])).unwrap(), v([5.0, 1.0])).unwrap();
+                let toi = check(&square, &fixed([0.0, 0.0]), &square, &away, &config, 8, &mut worst, "away");
+                assert_eq!((toi.outcome, toi.iterations), (ImpactOutcome::Miss, 1));
                 let toi = check(&square, &fixed([0.0, 0.0]), &square, &fixed([2.005, 0.0]), &config, 8, &mut worst, "near");
                 assert!(matches!(toi.outcome, ImpactOutcome::Start(s) if (s.separation - 0.005).abs() < 1e-5), "{toi:?}");
                 let moving = Sweep::translation(&Transform::from_translation(v([1.5, 0.0])).unwrap(), v([5.0, 0.0])).unwrap();
