@@ -108,6 +108,35 @@ macro_rules! toi_suite {
                 16.0 * EPS * (size + far(sa) + far(sb) + norm(pt(sa.linear())) + norm(pt(sb.linear())))
             }
 
+            /// The features a hit names hold its closest points: a vertex's
+            /// core point is the closest point less the radius along the
+            /// normal, and an edge (moved out by the radius) passes through it.
+            fn check_features(ga: &Geo, sa: &Sweep<R>, gb: &Geo, sb: &Sweep<R>, hit: &Impact<R>, slack: f64, ctx: &dyn Fn() -> String) {
+                let n = pt(hit.normal);
+                let sides = [(ga, sa, pt(hit.point_a), 1.0, hit.features.a), (gb, sb, pt(hit.point_b), -1.0, hit.features.b)];
+                for (g, s, closest, sign, feature) in sides {
+                    let (core, tf) = (g.core(), s.transform_at(hit.time));
+                    // The closest point moved back onto the core.
+                    let c = [closest[0] - sign * g.radius() * n[0], closest[1] - sign * g.radius() * n[1]];
+                    let at = |i: usize| pt(tf.transform_point(v(core[i % core.len()])));
+                    let tol = slack + 1e-6 * g.extent();
+                    match feature {
+                        Feature::Vertex(i) => {
+                            let d = norm(geo::sub(c, at(i as usize)));
+                            assert!(d <= tol, "vertex {i} {d} from the closest point: {}", ctx());
+                        }
+                        Feature::Edge(i) => {
+                            let (p, q) = (at(i as usize), at(i as usize + 1));
+                            let (e, w) = (geo::sub(q, p), geo::sub(c, p));
+                            let u = ((w[0] * e[0] + w[1] * e[1]) / (e[0] * e[0] + e[1] * e[1])).clamp(0.0, 1.0);
+                            let d = norm([w[0] - u * e[0], w[1] - u * e[1]]);
+                            assert!(d <= tol, "edge {i} {d} from the closest point: {}", ctx());
+                        }
+                        Feature::Curve => {}
+                    }
+                }
+            }
+
             /// Runs one case and checks it against the oracle; `samples`
             /// times before the reported time (or over a miss's step).
             #[allow(clippy::too_many_arguments)]
@@ -148,6 +177,7 @@ macro_rules! toi_suite {
                             floor(before(hit.time, k), worst);
                             floor(hit.time * (1.0 - (k as R + 1.0) * 1e-3), worst);
                         }
+                        check_features(ga, sa, gb, sb, &hit, slack, &ctx);
                         if toi.status.is_converged() {
                             worst.hits += 1;
                             let above = (d - target - tol) / slack;
