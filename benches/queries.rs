@@ -7,6 +7,7 @@
 //! cargo bench --bench queries                 # every family, f32 and f64
 //! cargo bench --bench queries -- poly8 ray    # families whose name contains a word
 //! cargo bench --bench queries -- cast         # the linear casts against parry's cast_shapes
+//! cargo bench --bench queries -- toi          # time of impact with rotation against cast_shapes_nonlinear
 //! GJK2D_BENCH_PASSES=31 cargo bench --bench queries
 //! ```
 //!
@@ -18,7 +19,7 @@
 //! transforms held as data (as a scene's are, not constants to fold); inputs
 //! are f32 values, so both precisions see the same geometry.
 
-use gjk2d::{Capsule, Circle, Gjk, Motion, Polygon, Ray, Real, SupportMap, Transform};
+use gjk2d::{Capsule, Circle, Gjk, ImpactConfig, Motion, Polygon, Ray, Real, SupportMap, Sweep, Transform};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -159,6 +160,15 @@ fn casts(seed: u64, count: usize, mk_a: &Maker, mk_b: &Maker) -> Vec<CastCase> {
         .collect()
 }
 
+/// Times of impact: a cast's pair and motion, B turning by up to half a
+/// turn either way about its centre over the step (A stays).
+type ToiCase = (Sh, Sh, [f64; 2], f64);
+
+fn tois(seed: u64, count: usize, mk_a: &Maker, mk_b: &Maker) -> Vec<ToiCase> {
+    let mut rng = Rng(seed ^ 0x746f69);
+    casts(seed, count, mk_a, mk_b).into_iter().map(|(a, b, m)| (a, b, m, r32(rng.range(-3.1, 3.1)))).collect()
+}
+
 // --- gjk2d -----------------------------------------------------------------------
 
 /// The polygon boxed, as parry's shapes are (`Box<dyn Shape>`): a scene's
@@ -249,6 +259,18 @@ fn g_casts<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>, Motion<R>)]) {
     }
 }
 
+/// B's sweep: its centre moving by the motion while it turns. A Box2D-like
+/// target (a linear slop of 0.005 for shapes of size 1) and tolerance.
+fn g_tois<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>, Sweep<R>)]) {
+    let gjk = Gjk::<R>::new();
+    let still = Sweep::still(&Transform::<R>::IDENTITY);
+    let config = ImpactConfig::new(R::from_f64(0.005), R::from_f64(0.00125)).unwrap();
+    for (a, b, sweep) in batch {
+        let (a, b) = (black_box(a), black_box(b));
+        black_box(with_g!(a, |x| with_g!(b, |y| gjk.time_of_impact(x, black_box(&still), y, sweep, &config))));
+    }
+}
+
 // --- parry -----------------------------------------------------------------------
 
 macro_rules! parry_side {
@@ -258,7 +280,8 @@ macro_rules! parry_side {
             use std::hint::black_box;
             use $p::math::{Pose, Vector};
             use $p::query::{
-                self, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, Ray, ShapeCastOptions,
+                self, ContactManifold, DefaultQueryDispatcher, NonlinearRigidMotion, PersistentQueryDispatcher, Ray,
+                ShapeCastOptions,
             };
             use $p::shape::{Ball, Capsule, ConvexPolygon, Shape};
 
@@ -327,6 +350,25 @@ macro_rules! parry_side {
                     let (a, b) = (black_box(a), black_box(b));
                     let options = ShapeCastOptions::with_max_time_of_impact(1.0);
                     let _ = black_box(query::cast_shapes(&a.1, Vector::ZERO, &*a.0, &b.1, *m, &*b.0, options));
+                }
+            }
+
+            /// The shape moving its world point `center` by `m` while turning
+            /// by `angle` over the unit time; A stays.
+            pub fn nonlinear(s: &PS, center: &[f64; 2], m: &[f64; 2], angle: f64) -> NonlinearRigidMotion {
+                NonlinearRigidMotion::new(s.1, v(center) - s.1.translation, v(m), angle as $R)
+            }
+
+            pub fn still(s: &PS) -> NonlinearRigidMotion {
+                NonlinearRigidMotion::constant_position(s.1)
+            }
+
+            /// B turning and moving against A over the whole step, stopping at
+            /// a penetration at the start.
+            pub fn tois(batch: &[(PS, PS, NonlinearRigidMotion, NonlinearRigidMotion)]) {
+                for (a, b, ma, mb) in batch {
+                    let (a, b) = (black_box(a), black_box(b));
+                    let _ = black_box(query::cast_shapes_nonlinear(ma, &*a.0, mb, &*b.0, 0.0, 1.0, true));
                 }
             }
 
@@ -457,6 +499,41 @@ fn cast_family<const N: usize>(name: &str, cases: &[CastCase], passes: usize, ro
     push_row(rows, name, "cast", &t);
 }
 
+fn toi_family<const N: usize>(name: &str, cases: &[ToiCase], passes: usize, rows: &mut Vec<Row>) {
+    fn gt<R: Real, const N: usize>(b: &[ToiCase]) -> Vec<(G<R, N>, G<R, N>, Sweep<R>)> {
+        let v = |p: &[f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
+        let id = Transform::<R>::IDENTITY;
+        b.iter()
+            .map(|(a, b, m, angle)| {
+                let sweep = Sweep::new(&id, v(&bounds(b).0), v(m), R::from_f64(*angle)).unwrap();
+                (g(a), g(b), sweep)
+            })
+            .collect()
+    }
+    let g32 = gt::<f32, N>(cases);
+    let g64 = gt::<f64, N>(cases);
+    macro_rules! parry_cases {
+        ($m:ident) => {
+            cases
+                .iter()
+                .map(|(a, b, m, angle)| {
+                    let (a, b, c) = ($m::build(a), $m::build(b), bounds(b).0);
+                    let (ma, mb) = ($m::still(&a), $m::nonlinear(&b, &c, m, *angle));
+                    (a, b, ma, mb)
+                })
+                .collect::<Vec<_>>()
+        };
+    }
+    let p32 = parry_cases!(parry32);
+    let p64 = parry_cases!(parry64);
+    let t = time_passes(
+        passes,
+        cases.len(),
+        &mut [&mut || g_tois(&g32), &mut || parry32::tois(&p32), &mut || g_tois(&g64), &mut || parry64::tois(&p64)],
+    );
+    push_row(rows, name, "time_of_impact", &t);
+}
+
 /// A family's row from its contenders' times (gjk2d f32, parry f32, gjk2d
 /// f64, parry f64), printed and kept for the summary.
 fn push_row(rows: &mut Vec<Row>, name: &str, query: &'static str, t: &[Vec<f64>]) {
@@ -534,6 +611,12 @@ fn main() {
     }
     if wanted("cast_capsule_poly8") {
         cast_family::<8>("cast_capsule_poly8", &casts(14, CASES, &capsule, &p8), passes, &mut rows);
+    }
+    if wanted("toi_poly8") {
+        toi_family::<8>("toi_poly8", &tois(15, CASES, &p8, &p8), passes, &mut rows);
+    }
+    if wanted("toi_poly8_capsule") {
+        toi_family::<8>("toi_poly8_capsule", &tois(16, CASES, &p8, &capsule), passes, &mut rows);
     }
     let slower: Vec<String> = rows
         .iter()

@@ -6,6 +6,7 @@
 
 use crate::error::Error;
 use crate::real::Real;
+use crate::transform::check_length;
 
 /// The minimum for every iteration limit, as in dyn4j.
 pub const MIN_ITERATIONS: u32 = 5;
@@ -153,6 +154,41 @@ impl<R: Real> EpaConfig<R> {
     /// bound on the depth is below `epsilon * size`.
     pub fn set_epsilon(&mut self, eps: R) -> Result<(), Error> {
         self.epsilon = check_epsilon(eps, false)?;
+        Ok(())
+    }
+}
+
+/// The target and the limits of [`Gjk::time_of_impact`](crate::Gjk::time_of_impact):
+/// absolute lengths, as a physics step's slop is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ImpactConfig<R: Real> {
+    target: R,
+    tolerance: R,
+    max_iterations: u32,
+}
+
+impl<R: Real> ImpactConfig<R> {
+    /// Stop the shapes `target` apart (zero or more: a small positive
+    /// target leaves the contact solver a speculative gap and spares the
+    /// advancement its slow last steps), accepting up to `tolerance` more
+    /// (greater than zero). Both finite and within
+    /// [`Real::MAX_COORDINATE`]; 50 iterations.
+    pub fn new(target: R, tolerance: R) -> Result<Self, Error> {
+        let target = if target == R::ZERO { target } else { check_length(target)? };
+        Ok(Self { target, tolerance: check_length(tolerance)?, max_iterations: 50 })
+    }
+    pub fn target(&self) -> R {
+        self.target
+    }
+    pub fn tolerance(&self) -> R {
+        self.tolerance
+    }
+    pub fn max_iterations(&self) -> u32 {
+        self.max_iterations
+    }
+    /// At least 5 ([`MIN_ITERATIONS`]).
+    pub fn set_max_iterations(&mut self, n: u32) -> Result<(), Error> {
+        self.max_iterations = check_iterations(n)?;
         Ok(())
     }
 }

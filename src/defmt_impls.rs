@@ -9,8 +9,9 @@ use crate::shape::{
     Capsule, Circle, Ellipse, HalfEllipse, Polygon, Rectangle, Rounded, Segment, Slice, SupportMap, Triangle,
 };
 use crate::{
-    CastHit, CastOutcome, CastStart, ContactPoint, Detection, EpaConfig, GjkConfig, Manifold, Motion, Penetration,
-    PenetrationEstimate, Ray, RayCast, RayHit, RayOutcome, Separation, ShapeCast, SupportPoint, Transform,
+    CastHit, CastOutcome, CastStart, ContactPoint, Detection, EpaConfig, GjkConfig, Impact, ImpactConfig,
+    ImpactOutcome, ImpactStart, Manifold, Motion, Penetration, PenetrationEstimate, Ray, RayCast, RayHit, RayOutcome,
+    Separation, ShapeCast, SupportPoint, Sweep, TimeOfImpact, Transform,
 };
 
 /// A glam vector as `(x, y)`.
@@ -169,6 +170,65 @@ impl<R: Real + Format> Format for CastOutcome<R> {
 impl<R: Real + Format> Format for ShapeCast<R> {
     fn format(&self, f: Formatter<'_>) {
         write!(f, "ShapeCast {{ outcome: {}, iterations: {}, status: {} }}", self.outcome, self.iterations, self.status)
+    }
+}
+
+impl<R: Real + Format> Format for Sweep<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "Sweep {{ start: {}, linear: {}, angle: {} }}", self.start(), xy::<R>(self.linear()), self.angle())
+    }
+}
+
+impl<R: Real + Format> Format for ImpactConfig<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "ImpactConfig {{ target: {}, tolerance: {}, max_iterations: {} }}",
+            self.target(),
+            self.tolerance(),
+            self.max_iterations()
+        )
+    }
+}
+
+impl<R: Real + Format> Format for Impact<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Impact {{ time: {}, separation: {}, normal: {}, point_a: {}, point_b: {}, features: {} }}",
+            self.time,
+            self.separation,
+            xy::<R>(self.normal),
+            xy::<R>(self.point_a),
+            xy::<R>(self.point_b),
+            self.features
+        )
+    }
+}
+
+impl<R: Real + Format> Format for ImpactStart<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(f, "ImpactStart {{ separation: {}, normal: {} }}", self.separation, xy::<R>(self.normal))
+    }
+}
+
+impl<R: Real + Format> Format for ImpactOutcome<R> {
+    fn format(&self, f: Formatter<'_>) {
+        match self {
+            ImpactOutcome::Hit(h) => write!(f, "Hit({})", h),
+            ImpactOutcome::Miss => write!(f, "Miss"),
+            ImpactOutcome::Start(s) => write!(f, "Start({})", s),
+        }
+    }
+}
+
+impl<R: Real + Format> Format for TimeOfImpact<R> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "TimeOfImpact {{ outcome: {}, iterations: {}, status: {} }}",
+            self.outcome, self.iterations, self.status
+        )
     }
 }
 

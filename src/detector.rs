@@ -6,10 +6,11 @@
 //! EPA, closest points nor ray casts.
 
 use crate::cast::{cast_pair, CastOutcome, CastStart, Motion, ShapeCast};
-use crate::config::GjkConfig;
+use crate::config::{GjkConfig, ImpactConfig};
 use crate::epa::{Epa, PenetrationSolver};
 use crate::error::Error;
 use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
+use crate::impact::{advance, Sweep, TimeOfImpact};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
@@ -465,6 +466,64 @@ impl<R: Real, P> Gjk<R, P> {
             ta.inverse_rotate(motion.translation),
             self.config.max_raycast_iterations(),
             self.config.raycast_epsilon(),
+        )
+    }
+
+    /// When A and B, each moving by its [`Sweep`] over a step (translating
+    /// and turning), first come within `config`'s target distance: the
+    /// time, a fraction of the step, with their separation (within the
+    /// tolerance above the target), normal and closest points there; a miss
+    /// when they stay farther apart; [`ImpactOutcome::Start`](crate::ImpactOutcome::Start) when they are
+    /// closer than the target at the start.
+    ///
+    /// Conservative advancement: each iteration asks the distance query
+    /// and moves the time on by the gap over the fastest the shapes could
+    /// close it along its normal, so the time is never after the first
+    /// contact, even where it stops at the iteration limit
+    /// ([`Status::IterationLimit`]). A fast spin or a target of zero takes
+    /// more iterations. A tolerance below the distance query's own
+    /// (`distance_epsilon` times the pair's size) on curved shapes may stop
+    /// it early, at a safe time, with that status.
+    ///
+    /// ```
+    /// use gjk2d::{Gjk, ImpactConfig, Rectangle, Sweep, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let wall = Rectangle::new(1.0, 10.0)?; // its left face at x = -0.5
+    /// let plank = Rectangle::new(4.0, 0.2)?;
+    /// let start = Transform::from_translation(Vec2::new(-6.0, 0.0))?;
+    /// // Moving 8 to the right while turning a quarter turn about its centre.
+    /// let spin = Sweep::new(&start, Vec2::ZERO, Vec2::new(8.0, 0.0), core::f32::consts::FRAC_PI_2)?;
+    /// let config = ImpactConfig::new(0.01, 0.005)?;
+    /// let toi = gjk.time_of_impact(&wall, &Sweep::still(&Transform::IDENTITY), &plank, &spin, &config);
+    /// let hit = toi.hit().expect("the plank's end reaches the wall");
+    /// assert!(hit.time < 1.0);
+    /// assert!(hit.separation >= 0.0099 && hit.separation <= 0.0151);
+    /// assert!((hit.normal - -Vec2::X).length() < 1e-3);
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
+    pub fn time_of_impact<A, B>(
+        &self,
+        a: &A,
+        sweep_a: &Sweep<R>,
+        b: &B,
+        sweep_b: &Sweep<R>,
+        config: &ImpactConfig<R>,
+    ) -> TimeOfImpact<R>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        advance(
+            a,
+            sweep_a,
+            b,
+            sweep_b,
+            config,
+            |ta, tb| in_own_frame(|| self.distance(a, ta, b, tb)),
+            |ta, tb| in_own_frame(|| self.penetration(a, ta, b, tb)),
         )
     }
 }

@@ -12,6 +12,8 @@
 //! - [`Gjk::raycast`]: first hit of a ray on any convex shape.
 //! - [`Gjk::cast`]: when a shape translating along a motion first touches
 //!   another (a linear shape cast).
+//! - [`Gjk::time_of_impact`]: when two shapes that translate and rotate
+//!   over a step first come within a target distance.
 //! - [`Gjk::manifold`]: up to two contact points with feature ids, within a
 //!   speculative margin, for a physics step.
 //!
@@ -52,6 +54,7 @@ mod epa;
 mod error;
 mod gjk;
 mod hw_sqrt;
+mod impact;
 mod manifold;
 mod minkowski;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -73,10 +76,11 @@ mod batch;
 mod defmt_impls;
 
 pub use cast::{CastHit, CastOutcome, CastStart, Motion, ShapeCast};
-pub use config::{EpaConfig, GjkConfig, MIN_ITERATIONS};
+pub use config::{EpaConfig, GjkConfig, ImpactConfig, MIN_ITERATIONS};
 pub use detector::Gjk;
 pub use epa::{Epa, PenetrationEstimate, PenetrationSolver};
 pub use error::Error;
+pub use impact::{Impact, ImpactOutcome, ImpactStart, Sweep, TimeOfImpact, MAX_SWEEP_ANGLE};
 pub use minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
 pub use ray::Ray;
 pub use real::Real;

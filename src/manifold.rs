@@ -137,6 +137,17 @@ impl<R: Real> Side<R> {
         edge(if face.ccw { self.support_id } else { face.other_id })
     }
 
+    /// The feature that faces the other shape: the face when it is flat to
+    /// `facing` (within 2.5 degrees, as [`new`](Self::new) looks for a
+    /// face's far end), else the support vertex (or the curve).
+    fn facing_feature(&self) -> Feature {
+        let flat = R::ONE - R::ONE / R::from_u32(1024);
+        match self.face.filter(|face| face.normal.dot(self.facing) >= flat) {
+            Some(face) => self.edge(&face),
+            None => vertex(self.support_id),
+        }
+    }
+
     /// The ends of the side along the tangent: the support point, and the
     /// far end of the face's flat side.
     fn ends(&self) -> (End<R>, Option<End<R>>) {
@@ -364,5 +375,22 @@ where
         if separation <= margin {
             out.push(ContactPoint { point: pair.to_world_point(point), separation, id });
         }
+    }
+}
+
+/// The features of A and B that face each other along `normal` (in the pair
+/// frame, from A towards B): each shape's face flat to it, or its support
+/// vertex, as the manifold names them.
+pub(crate) fn facing_features<R, A, B>(pair: &Pair<'_, R, A, B>, normal: V2<R>) -> FeatureId
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let (polytope_a, polytope_b) = pair.polytopes();
+    let feature = |side: Side<R>| side.facing_feature();
+    FeatureId {
+        a: feature(Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a)),
+        b: feature(Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b)),
     }
 }

@@ -2,7 +2,7 @@
 // (libFuzzer, `cargo fuzz run queries`) and `tests/fuzz_smoke.rs` (stable,
 // random bytes, run by `cargo test`). Any input: constructors may refuse it
 // with an error but never panic; every query on what they accept (the linear
-// cast too) terminates and gives finite output.
+// cast and the time of impact too) terminates and gives finite output.
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::*;
@@ -118,6 +118,28 @@ macro_rules! fuzz_precision {
                             assert!(x.is_finite(), "non-finite cast hit {cast:?}");
                         }
                         assert!((0.0..=1.0).contains(&h.fraction));
+                    }
+                }
+                // After the cast, for the same reason: both shapes moving and
+                // turning, to a target.
+                let mut sweep = |t: &Transform<R>| Sweep::new(t, $vec::new(next(), next()), $vec::new(next(), next()), next());
+                let (sa, sb) = (sweep(ta), sweep(tb));
+                let config = ImpactConfig::new(next(), next());
+                if let (Ok(sa), Ok(sb), Ok(config)) = (sa, sb, config) {
+                    let toi = gjk.time_of_impact(&**a, &sa, &**b, &sb, &config);
+                    match toi.outcome {
+                        ImpactOutcome::Hit(h) => {
+                            for x in [h.time, h.separation, h.normal.x, h.normal.y, h.point_a.x, h.point_a.y, h.point_b.x, h.point_b.y] {
+                                assert!(x.is_finite(), "non-finite time of impact {toi:?}");
+                            }
+                            assert!((0.0..=1.0).contains(&h.time) && toi.iterations <= config.max_iterations(), "{toi:?}");
+                        }
+                        ImpactOutcome::Start(s) => {
+                            for x in [s.separation, s.normal.x, s.normal.y] {
+                                assert!(x.is_finite(), "non-finite time of impact {toi:?}");
+                            }
+                        }
+                        ImpactOutcome::Miss => assert!(toi.iterations <= config.max_iterations(), "{toi:?}"),
                     }
                 }
             }
