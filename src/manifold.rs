@@ -309,18 +309,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let (polytope_a, polytope_b) = pair.polytopes();
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    let (corners_a, corners_b) = (pair.corners_a(), pair.corners_b());
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    let (lent_a, lent_b) = (
-        |id: u32, ccw: bool| corners_a.as_ref().map(|c| lent_face(c, id, ccw)),
-        |id: u32, ccw: bool| corners_b.as_ref().map(|c| lent_face(c, id, ccw)),
-    );
-    #[cfg(any(target_os = "none", target_family = "wasm"))]
-    let (lent_a, lent_b) = (|_: u32, _: bool| None, |_: u32, _: bool| None);
-    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a, lent_a);
-    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b, lent_b);
+    let (a, b) = sides(pair, normal);
     let tangent = normal.perp();
     let along = |e: &End<R>| e.point.dot(tangent);
     // Each side's interval, its lower end first; then the overlap, the
@@ -387,10 +376,30 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
+    let (a, b) = sides(pair, normal);
+    FeatureId { a: a.facing_feature(), b: b.facing_feature() }
+}
+
+/// The sides of A and B that face each other along `normal` (in the pair
+/// frame, from A towards B).
+#[inline(always)]
+fn sides<R, A, B>(pair: &Pair<'_, R, A, B>, normal: V2<R>) -> (Side<R>, Side<R>)
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
     let (polytope_a, polytope_b) = pair.polytopes();
-    let feature = |side: Side<R>| side.facing_feature();
-    FeatureId {
-        a: feature(Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a)),
-        b: feature(Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b)),
-    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    let (corners_a, corners_b) = (pair.corners_a(), pair.corners_b());
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    let (lent_a, lent_b) = (
+        |id: u32, ccw: bool| corners_a.as_ref().map(|c| lent_face(c, id, ccw)),
+        |id: u32, ccw: bool| corners_b.as_ref().map(|c| lent_face(c, id, ccw)),
+    );
+    #[cfg(any(target_os = "none", target_family = "wasm"))]
+    let (lent_a, lent_b) = (|_: u32, _: bool| None, |_: u32, _: bool| None);
+    let a = Side::new(|d| pair.support_a(d), normal, pair.radius_a(), polytope_a, lent_a);
+    let b = Side::new(|d| pair.support_b(d), -normal, pair.radius_b(), polytope_b, lent_b);
+    (a, b)
 }

@@ -83,6 +83,7 @@ macro_rules! toi_suite {
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).unwrap()),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).unwrap()),
                     Geo::Segment(a, b) => Box::new(Segment::new(v(*a), v(*b)).unwrap()),
+                    Geo::Rounded(p, r) => Box::new(Rounded::new(Polygon::<R, 16>::new(&p.iter().map(|&q| v(q)).collect::<Vec<_>>()).unwrap(), *r as R).unwrap()),
                 }
             }
 
