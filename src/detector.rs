@@ -5,7 +5,7 @@
 //! is compiled into a program: the intersection test alone pulls in neither
 //! EPA, closest points nor ray casts.
 
-use crate::cast::{cast_pair, CastOutcome, CastStart, Motion, ShapeCast};
+use crate::cast::{cast_pair, CastHit, CastOutcome, CastStart, Motion, ShapeCast};
 use crate::config::{GjkConfig, ImpactConfig};
 use crate::epa::{Epa, PenetrationSolver};
 use crate::error::Error;
@@ -14,7 +14,7 @@ use crate::impact::{advance, Sweep, TimeOfImpact};
 use crate::minkowski::Pair;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
-use crate::result::{Detection, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
+use crate::result::{Detection, FeatureId, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 use crate::shape::SupportMap;
 use crate::simplex::{Payload, Simplex, Vertex, Witness};
 use crate::transform::Transform;
@@ -467,6 +467,39 @@ impl<R: Real, P> Gjk<R, P> {
             self.config.max_raycast_iterations(),
             self.config.raycast_epsilon(),
         )
+    }
+
+    /// The features of A and B that touch at a cast's `hit`: each shape's
+    /// face flat to the hit's normal (within 2.5 degrees), else its vertex
+    /// nearest the other, named as [`Gjk::manifold`] names them. They
+    /// depend on the normal only, not on where along the motion B is, so
+    /// A and B are given as the cast was. Asked apart from the cast, so that
+    /// a cast that needs no ids costs nothing for them.
+    ///
+    /// ```
+    /// use gjk2d::{CastOutcome, Feature, Gjk, Motion, Rectangle, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let floor = Rectangle::new(10.0, 1.0)?; // its top face at y = 0.5
+    /// let crate_ = Rectangle::new(2.0, 2.0)?;
+    /// let above = Transform::from_translation(Vec2::new(0.0, 4.0))?;
+    /// let fall = Motion::new(Vec2::new(0.0, -5.0))?;
+    /// let CastOutcome::Hit(hit) = gjk.cast(&floor, &Transform::IDENTITY, &crate_, &above, &fall).outcome else {
+    ///     panic!("the crate lands on the floor")
+    /// };
+    /// let features = gjk.cast_features(&floor, &Transform::IDENTITY, &crate_, &above, &hit);
+    /// // Face on face: the floor's top edge, the crate's bottom edge.
+    /// assert!(matches!((features.a, features.b), (Feature::Edge(_), Feature::Edge(_))));
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
+    pub fn cast_features<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>, hit: &CastHit<R>) -> FeatureId
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let normal = ta.inverse_rotate(V2::from_glam(hit.normal));
+        crate::manifold::facing_features(&Pair::new(a, ta, b, tb), normal)
     }
 
     /// When A and B, each moving by its [`Sweep`] over a step (translating

@@ -317,6 +317,29 @@ macro_rules! cast_suite {
                         if beyond_a > tol || beyond_b > tol {
                             return Err(format!("normal does not separate ({beyond_a:e}, {beyond_b:e}): {}", ctx()));
                         }
+                        // The features the hit names hold its touching
+                        // points: a vertex is the point less the radius
+                        // along the normal, an edge (out by the radius)
+                        // passes through it; B's at its start.
+                        let features = gjk.cast_features(&*a.shape, &a.tf, &*b.shape, &b.tf, &h);
+                        for (side, point, sign, feature) in [(a, pa, 1.0, features.a), (b, back, -1.0, features.b)] {
+                            let core = side.geo.core();
+                            let c = [point[0] - sign * side.geo.radius() * n[0], point[1] - sign * side.geo.radius() * n[1]];
+                            let at = |i: usize| side.map(core[i % core.len()]);
+                            let off = match feature {
+                                Feature::Vertex(i) => norm(sub(c, at(i as usize))),
+                                Feature::Edge(i) => {
+                                    let (p, q) = (at(i as usize), at(i as usize + 1));
+                                    let (e, w) = (sub(q, p), sub(c, p));
+                                    let u = ((w[0] * e[0] + w[1] * e[1]) / (e[0] * e[0] + e[1] * e[1])).clamp(0.0, 1.0);
+                                    norm([w[0] - u * e[0], w[1] - u * e[1]])
+                                }
+                                Feature::Curve => 0.0,
+                            };
+                            if off > 2.0 * slack + 1e-6 * side.geo.extent() {
+                                return Err(format!("feature {feature:?} {off:e} from its touching point: {}", ctx()));
+                            }
+                        }
                         if exact.status == RayStatus::Hit && exact.normal_unique && robust {
                             let e = norm(sub(n, exact.normal));
                             worst.normal = worst.normal.max(e);
