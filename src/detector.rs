@@ -196,16 +196,7 @@ impl<R: Real, P> Gjk<R, P> {
         // so this frame holds only the pair and the simplex's points while
         // the solver's polytope is on the stack.
         match core_proximity(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
-            Proximity::Overlapping(ref enclosing) => {
-                let estimate = self.solver.solve(&pair, enclosing.points());
-                Some(Penetration {
-                    normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
-                    depth: estimate.depth + pair.radius(),
-                    error_bound: estimate.error_bound,
-                    iterations: enclosing.iterations + estimate.iterations,
-                    status: estimate.status,
-                })
-            }
+            Proximity::Overlapping(ref enclosing) => Some(solved(&self.solver, &pair, enclosing)),
             Proximity::Resolved(penetration) => penetration,
         }
     }
@@ -264,7 +255,7 @@ impl<R: Real, P> Gjk<R, P> {
         if margin < R::ZERO || margin > R::MAX_COORDINATE {
             return Err(Error::OutOfRange);
         }
-        let Some((normal, separation, iterations, status)) = in_own_frame(|| self.contact(a, ta, b, tb)) else {
+        let Some((normal, separation, iterations, status)) = self.contact(a, ta, b, tb) else {
             // Touching to the one query, apart to the other: no point
             // either would vouch for.
             return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
@@ -288,9 +279,27 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        let apart = |s: Separation<R>| (s.normal, s.distance, s.iterations, s.status);
-        let overlapping = |p: Penetration<R>| (p.normal, -p.depth, p.iterations, p.status);
-        let pair = Pair::new(a, ta, b, tb);
+        // On bare metal the two queries in turn, each in a frame of its
+        // own: GJK twice for overlapping shapes, but the stack peaks at the
+        // larger query, where one frame holding both paths peaks higher.
+        #[cfg(target_os = "none")]
+        return match in_own_frame(|| self.distance(a, ta, b, tb)) {
+            Some(s) => Some(apart(s)),
+            None => in_own_frame(|| self.penetration(a, ta, b, tb)).map(overlapping),
+        };
+        #[cfg(not(target_os = "none"))]
+        self.contact_of(Pair::new(a, ta, b, tb))
+    }
+
+    /// [`contact`](Self::contact) of a placed pair, with one GJK run.
+    #[cfg(not(target_os = "none"))]
+    #[inline(always)]
+    fn contact_of<A, B>(&self, pair: Pair<'_, R, A, B>) -> Option<Contact<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
         if pair.point_cores() {
             if let Some(ref core) = PointCores::new(&pair) {
                 if !core.certainly_within(pair.radius_a() + pair.radius_b()) {
@@ -328,14 +337,7 @@ impl<R: Real, P> Gjk<R, P> {
                         }
                     }
                 }
-                let estimate = self.solver.solve(&pair, enclosing.points());
-                Some(overlapping(Penetration {
-                    normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
-                    depth: estimate.depth + pair.radius(),
-                    error_bound: estimate.error_bound,
-                    iterations: enclosing.iterations + estimate.iterations,
-                    status: estimate.status,
-                }))
+                Some(overlapping(solved(&self.solver, &pair, enclosing)))
             }
         }
     }
@@ -865,12 +867,43 @@ where
     }
 }
 
+/// The penetration of cores that overlap, from the solver started on GJK's
+/// enclosing simplex, the radii added.
+#[inline(always)]
+fn solved<R, A, B, P>(solver: &P, pair: &Pair<'_, R, A, B>, enclosing: &Enclosing<R>) -> Penetration<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+    P: PenetrationSolver<R>,
+{
+    let estimate = solver.solve(pair, enclosing.points());
+    Penetration {
+        normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
+        depth: estimate.depth + pair.radius(),
+        error_bound: estimate.error_bound,
+        iterations: enclosing.iterations + estimate.iterations,
+        status: estimate.status,
+    }
+}
+
 /// The manifold's normal, least separation, iterations and status.
 type Contact<R> = (<R as Real>::Vector, R, u32, Status);
+
+/// The manifold's start from shapes apart.
+fn apart<R: Real>(s: Separation<R>) -> Contact<R> {
+    (s.normal, s.distance, s.iterations, s.status)
+}
+
+/// The manifold's start from shapes that overlap (or touch).
+fn overlapping<R: Real>(p: Penetration<R>) -> Contact<R> {
+    (p.normal, -p.depth, p.iterations, p.status)
+}
 
 /// What the manifold's GJK run leaves: the separation of shapes apart, the
 /// penetration of rounded shapes whose cores are apart, or the simplex that
 /// encloses the origin for the solver.
+#[cfg(not(target_os = "none"))]
 enum CoreContact<R: Real> {
     Apart(Separation<R>),
     Resolved(Option<Penetration<R>>),
@@ -878,10 +911,9 @@ enum CoreContact<R: Real> {
 }
 
 /// GJK for the manifold's normal: [`core_proximity`] with the distance
-/// query's witness points, so shapes apart get their separation. Not
-/// inlined on bare metal, for the same reason.
-#[cfg_attr(target_os = "none", inline(never))]
-#[cfg_attr(not(target_os = "none"), inline(always))]
+/// query's witness points, so shapes apart get their separation.
+#[cfg(not(target_os = "none"))]
+#[inline(always)]
 fn core_contact<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreContact<R>
 where
     R: Real,
