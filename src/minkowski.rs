@@ -278,6 +278,13 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         (self.cos, self.sin, self.offset)
     }
 
+    /// Each shape's bounding radius about its center.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn bounding_radii(&self) -> (R, R) {
+        (self.a.bounding_radius(), self.b.bounding_radius())
+    }
+
     /// A direction of the pair frame in B's frame.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]

@@ -191,16 +191,22 @@ impl<R: Real> Axes<R> {
         first_max(&self.least)
     }
 
-    /// [`penetration`](Self::penetration), with the axis that gave it and
-    /// its lead over the next best axis (in scaled separation): how much
-    /// the axes may move before another could win.
-    pub fn penetration_lead(&self) -> ((R, V2<R>), usize, R) {
+    /// [`penetration`](Self::penetration), with the `count` axes of the
+    /// greatest separation (a bit per slot) and how far the first of them
+    /// leads every other axis: how much the axes may move before one not
+    /// among them could win.
+    #[inline(always)]
+    pub fn penetration_leaders(&self, count: usize) -> ((R, V2<R>), u32, R) {
         let (mut separation, best) = self.separations();
         let answer = penetration_along(separation[best], self.normals[best]);
-        let winner = separation[best];
-        separation[best] = -R::INFINITY;
-        let runner_up = separation[first_max(&separation)];
-        (answer, best, winner - runner_up)
+        let first = separation[best];
+        let (mut leaders, mut next) = (0u32, best);
+        for _ in 0..count {
+            leaders |= 1 << next;
+            separation[next] = -R::INFINITY;
+            next = first_max(&separation);
+        }
+        (answer, leaders, first - separation[next])
     }
 
     /// Every axis's separation along its unit normal (minus infinity for

@@ -11,11 +11,11 @@
 //!   overlapping when it still encloses the origin by more than rounding;
 //! - GJK's last simplex, looked up again, is where GJK starts: it ends on
 //!   the same criteria from any start;
-//! - the axis of the deepest overlap is evaluated alone only while the
-//!   motion since it won (bounded by the change of pose times the shapes'
-//!   extent) is too small to let another axis win, and only for the very
-//!   shapes it was measured on (their fingerprint): the answer is then the
-//!   cold query's, to the bit.
+//! - the few axes of the least overlap are evaluated alone only while the
+//!   motion since they led (bounded by the change of pose times the shapes'
+//!   radii) is too small to let any other axis catch up, and only for the
+//!   very shapes they were measured on (their fingerprint): the answer is
+//!   then the cold query's, to the bit.
 
 use crate::minkowski::NO_ID;
 use crate::real::{Real, V2};
@@ -35,7 +35,7 @@ use crate::real::{Real, V2};
 ///
 /// The queries' `iterations` count the work done: 0 where the cache alone
 /// decided (its axis still separates, its triangle still encloses the
-/// origin, its deepest axis still leads).
+/// origin, its leading axes still lead).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(any(target_os = "none", target_family = "wasm"), allow(dead_code))]
 pub struct PairCache<R: Real> {
@@ -48,22 +48,23 @@ pub struct PairCache<R: Real> {
     /// The opposite of the last normal, in A's frame: GJK's first search
     /// direction for shapes other than small polygons. Zero for none.
     direction: [R; 2],
-    /// The axis of the deepest overlap of two small polygons, [`NO_ID`] for
-    /// none, and its lead over every other axis in separation.
-    deepest: u32,
+    /// The `LEADERS` axes of two small polygons with the least overlap
+    /// (greatest separation), a bit per slot (none: zero), and how far the
+    /// first of them leads every other axis.
+    leaders: u32,
     lead: R,
-    /// When `deepest` was measured: B's rotation in A's frame (cosine,
+    /// When `leaders` were measured: B's rotation in A's frame (cosine,
     /// sine), the offset of B's center from A's in A's frame and in B's,
-    /// each shape's farthest vertex from its center, and the size of the
+    /// each shape's bounding radius about its center, and the size of the
     /// coordinates (for rounding): what turns a change of pose into a bound
     /// on how far any axis's separation moved.
     pose: [R; 6],
     radii: [R; 2],
     reach: R,
     /// How far the axes could have moved at the last check: a lead no
-    /// larger is not worth keeping (the check would likely fail again).
+    /// larger is not worth keeping (the next check would likely fail too).
     moved: R,
-    /// The two polygons `deepest` was measured on.
+    /// The two polygons `leaders` were measured on.
     fingerprint: u64,
 }
 
@@ -80,7 +81,7 @@ impl<R: Real> PairCache<R> {
             ids: [NO_ID; 3],
             separating: NO_ID,
             direction: [R::ZERO; 2],
-            deepest: NO_ID,
+            leaders: 0,
             lead: R::ZERO,
             pose: [R::ZERO; 6],
             radii: [R::ZERO; 2],
@@ -117,7 +118,6 @@ mod small {
 
     use super::PairCache;
     use crate::minkowski::{MinkowskiVertex, Pair, NO_ID};
-    use crate::polytope::SMALL_POLYGON_MAX;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
     use crate::sat::{penetration_along, scaled_separation, separates_by, Axes, Polygons};
@@ -125,20 +125,20 @@ mod small {
     use crate::simplex::{Payload, Simplex, Vertex};
 
     /// How far inside the cached triangle the origin must be, and by how
-    /// much the deepest axis must lead, over the coordinates' size: far
+    /// much the leading axes must lead, over the coordinates' size: far
     /// above the rounding of either test, so the cold query's computed
     /// answer is certainly the cached one.
     const ROUNDING: u32 = 64;
+
+    /// How many axes of the least overlap a cache keeps: two faces nearly
+    /// parallel, as in resting contact, give two axes nearly tied, and the
+    /// lead over the rest is what lets a step skip the others.
+    pub(super) const LEADERS: usize = 4;
 
     /// `|x| + |y|`: at least the length, with no square root.
     #[inline(always)]
     fn l1<R: Real>(v: V2<R>) -> R {
         v.x.abs() + v.y.abs()
-    }
-
-    /// The farthest vertex from `centre`.
-    fn radius<R: Real>(vertices: &[V2<R>], centre: V2<R>) -> R {
-        vertices.iter().fold(R::ZERO, |m, &v| m.max((v - centre).length_squared())).sqrt()
     }
 
     /// Offset `c` of B's center from A's (in A's frame) in B's frame.
@@ -152,14 +152,16 @@ mod small {
     /// constant (independent products, no chain), then summed.
     fn fingerprint<R: Real>(a: &[V2<R>], b: &[V2<R>]) -> u64 {
         const SALT: u64 = 0x9E37_79B9_7F4A_7C15;
-        const MIX: u64 = 0xD6E8_FEB8_6659_FD93;
-        let lengths = ((a.len() as u64) << 32 | b.len() as u64).wrapping_mul(MIX);
-        let coordinates = a.iter().chain(b).flat_map(|v| [v.x, v.y]);
-        let sum = coordinates.enumerate().fold(lengths, |h, (k, c)| {
-            let salted = c.to_f64().to_bits() ^ (k as u64 + 1).wrapping_mul(SALT);
-            h.wrapping_add(salted.wrapping_mul(MIX))
-        });
-        (sum ^ (sum >> 32)).wrapping_mul(MIX)
+        const MIX_X: u64 = 0xD6E8_FEB8_6659_FD93;
+        const MIX_Y: u64 = 0xA076_1D64_78BD_642F;
+        let mut sum = ((a.len() as u64) << 32 | b.len() as u64).wrapping_mul(MIX_X);
+        let mut salt = SALT;
+        for v in a.iter().chain(b) {
+            let (x, y) = (v.x.to_f64().to_bits(), v.y.to_f64().to_bits());
+            sum = sum.wrapping_add((x ^ salt).wrapping_mul(MIX_X)).wrapping_add((y ^ salt).wrapping_mul(MIX_Y));
+            salt = salt.wrapping_add(SALT);
+        }
+        (sum ^ (sum >> 32)).wrapping_mul(MIX_X)
     }
 
     /// Whether triangle `w` encloses the origin by more than `margin`
@@ -219,7 +221,7 @@ mod small {
             B: SupportMap<R> + ?Sized,
         {
             let d = pair.first_direction;
-            let (c, s) = (-R::HALF, R::from_f64(0.866_025_403_784_438_6));
+            let (c, s) = (R::ZERO, R::ONE);
             let turn = |s: R| V2::new(c * d.x - s * d.y, s * d.x + c * d.y);
             let supports = [polygons.support(d), polygons.support(turn(s)), polygons.support(turn(-s))];
             let size = Self::size(pair);
@@ -260,12 +262,12 @@ mod small {
             Detection { intersecting: !separated, iterations: 1, status: Status::Converged }
         }
 
-        /// The axis of the last deepest overlap, if the motion since cannot
-        /// have let another axis win (nor any separate). Seen from A, B's
+        /// The last leading axes, if the motion since cannot have let any
+        /// other axis catch up with them (nor separate). Seen from A, B's
         /// vertices move by at most its center's move plus the rotation's
         /// change times B's radius about its center; seen from B, A's
         /// likewise: a bound on each axis's move, A's axes and B's.
-        fn deepest_holds<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Option<usize>
+        fn leaders_hold<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Option<u32>
         where
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
@@ -282,19 +284,19 @@ mod small {
             let turn = V2::new(cos - cos0, sin - sin0).length();
             let moved_a = (c - V2::new(x0, y0)).length();
             let moved_b = (seen_from_b(cos, sin, c) - V2::new(u0, v0)).length();
-            let (on_a, on_b) = (moved_a + turn * radius_b, moved_b + turn * radius_a);
-            let own = if (self.deepest as usize) < SMALL_POLYGON_MAX { on_a } else { on_b };
+            let each = (moved_a + turn * radius_b).max(moved_b + turn * radius_a);
             let rounding = R::from_u32(ROUNDING) * R::EPSILON * (self.reach + moved_a);
-            self.moved = own + on_a.max(on_b) + rounding;
+            // The first leader may fall by `each`, any other axis rise by it.
+            self.moved = R::TWO * each + rounding;
             // Written so that NaN anywhere fails it.
-            let holds = self.deepest != NO_ID && self.lead > self.moved;
-            (holds && self.fingerprint == fingerprint(a, b)).then_some(self.deepest as usize)
+            let holds = self.leaders != 0 && self.lead > self.moved;
+            (holds && self.fingerprint == fingerprint(a, b)).then_some(self.leaders)
         }
 
-        /// Keeps the pose and the shapes' radii, and the deepest axis with
-        /// its lead if that exceeds the last motion (the shapes' fingerprint
-        /// is then worth taking).
-        fn remember_deepest<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], best: usize, lead: R)
+        /// Keeps the pose and the shapes' radii, and the leading axes with
+        /// their lead if that exceeds the last motion (the shapes'
+        /// fingerprint is then worth taking).
+        fn remember_leaders<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], leaders: u32, lead: R)
         where
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
@@ -302,22 +304,46 @@ mod small {
             let (cos, sin, _) = pair.pose();
             let c = pair.centers;
             let from_b = seen_from_b(cos, sin, c);
-            let (centre_a, centre_b) = (V2::from_glam(pair.a_center()), V2::from_glam(pair.b_center()));
-            let radii = [radius(a, centre_a), radius(b, centre_b)];
+            let centre_a = V2::<R>::from_glam(pair.a_center());
+            let (radius_a, radius_b) = pair.bounding_radii();
             self.separating = NO_ID;
             self.pose = [cos, sin, c.x, c.y, from_b.x, from_b.y];
-            self.radii = radii;
-            self.reach = R::TWO * (l1(centre_a) + l1(c) + radii[0] + radii[1]);
+            self.radii = [radius_a, radius_b];
+            self.reach = R::TWO * (l1(centre_a) + l1(c) + radius_a + radius_b);
             if lead > self.moved {
-                (self.deepest, self.lead, self.fingerprint) = (best as u32, lead, fingerprint(a, b));
+                (self.leaders, self.lead, self.fingerprint) = (leaders, lead, fingerprint(a, b));
             } else {
-                self.deepest = NO_ID;
+                self.leaders = 0;
             }
+        }
+
+        /// The penetration by the leading axes alone, as [`Axes`] would
+        /// give it from every axis: the first greatest separation among
+        /// them (`None` for a leader that separates, or a slot out of range).
+        fn by_leaders(&mut self, polygons: &Polygons<R>, leaders: u32) -> Option<Option<(R, V2<R>)>> {
+            let mut best: Option<(R, V2<R>)> = None;
+            // Set bits in ascending order: ties go to the first, as in `Axes`.
+            let mut rest = leaders;
+            while rest != 0 {
+                let slot = rest.trailing_zeros() as usize;
+                rest &= rest - 1;
+                let (normal, least) = polygons.axis(slot)?;
+                if least > R::ZERO {
+                    // It separates now: so would the cold query say.
+                    (self.separating, self.leaders) = (slot as u32, 0);
+                    return Some(None);
+                }
+                let s = scaled_separation(normal, least);
+                if best.is_none_or(|(b, _)| s > b) {
+                    best = Some((s, normal));
+                }
+            }
+            best.map(|(s, normal)| Some(penetration_along(s, normal)))
         }
 
         /// The penetration of two small polygons (`None`: apart), as the
         /// cold query answers it by their separating axes, to the bit: from
-        /// the cached separating axis or the cached deepest axis alone where
+        /// the cached separating axis or the cached leading axes alone where
         /// they still decide, else from every axis (and the cache refilled).
         pub(crate) fn penetration_small<A, B>(
             &mut self,
@@ -340,23 +366,18 @@ mod small {
             if polygons.axis(self.separating as usize).is_some_and(|(_, least)| least > R::ZERO) {
                 return None;
             }
-            if let Some(slot) = self.deepest_holds(pair, a, b) {
-                if let Some((normal, least)) = polygons.axis(slot) {
-                    if least > R::ZERO {
-                        // It separates now: so would the cold query say.
-                        (self.separating, self.deepest) = (slot as u32, NO_ID);
-                        return None;
-                    }
-                    return Some(found(penetration_along(scaled_separation(normal, least), normal), 0));
+            if let Some(leaders) = self.leaders_hold(pair, a, b) {
+                if let Some(answer) = self.by_leaders(&polygons, leaders) {
+                    return answer.map(|answer| found(answer, 0));
                 }
             }
             let axes = Axes::of(&polygons);
             if axes.separated() {
-                (self.separating, self.deepest) = (axes.most_separating() as u32, NO_ID);
+                (self.separating, self.leaders) = (axes.most_separating() as u32, 0);
                 return None;
             }
-            let (answer, best, lead) = axes.penetration_lead();
-            self.remember_deepest(pair, a, b, best, lead);
+            let (answer, leaders, lead) = axes.penetration_leaders(LEADERS);
+            self.remember_leaders(pair, a, b, leaders, lead);
             Some(found(answer, 1))
         }
 
