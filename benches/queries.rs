@@ -9,6 +9,7 @@
 //! cargo bench --bench queries -- cast         # the linear casts against parry's cast_shapes
 //! cargo bench --bench queries -- toi          # time of impact with rotation against cast_shapes_nonlinear
 //! GJK2D_BENCH_PASSES=31 cargo bench --bench queries
+//! cargo bench --bench queries -- warm        # warm-started queries against cold, step by step
 //! ```
 //!
 //! The four contenders (gjk2d and parry2d, f32 and f64) take turns within every
@@ -19,7 +20,7 @@
 //! transforms held as data (as a scene's are, not constants to fold); inputs
 //! are f32 values, so both precisions see the same geometry.
 
-use gjk2d::{Capsule, Circle, Gjk, ImpactConfig, Motion, Polygon, Ray, Real, SupportMap, Sweep, Transform};
+use gjk2d::{Capsule, Circle, Gjk, ImpactConfig, Motion, PairCache, Polygon, Ray, Real, SupportMap, Sweep, Transform};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -385,6 +386,165 @@ macro_rules! parry_side {
 parry_side!(parry32, parry2d, f32);
 parry_side!(parry64, parry2d_f64, f64);
 
+// --- warm starting ---------------------------------------------------------------
+
+/// A pair of 8-gons in motion, step by step: each shape (about 1 across, its
+/// semi-axes 0.5 to 1) moves by at most 1% of that and turns by at most 1
+/// degree a step. Poses as (x, y, angle), in f64.
+struct Moving {
+    shapes: (Sh, Sh),
+    poses: [[f64; 3]; 2],
+}
+
+fn moving_pairs(seed: u64, count: usize) -> (Vec<Moving>, Rng) {
+    let mut rng = Rng(seed);
+    let pairs = (0..count)
+        .map(|_| {
+            let (a, b) = (poly(&mut rng, 8, [0.0, 0.0]), poly(&mut rng, 8, [0.0, 0.0]));
+            let (d, t) = (rng.range(0.4, 1.6), rng.range(0.0, 6.3));
+            let poses = [[0.0, 0.0, rng.range(0.0, 6.3)], [d * t.cos(), d * t.sin(), rng.range(0.0, 6.3)]];
+            Moving { shapes: (a, b), poses }
+        })
+        .collect();
+    (pairs, rng)
+}
+
+/// One step of every pair: a random move of at most 0.01 and turn of at
+/// most 1 degree, each shape.
+fn step(pairs: &mut [Moving], rng: &mut Rng) {
+    for m in pairs {
+        for p in &mut m.poses {
+            let (r, t) = (0.01 * rng.f().sqrt(), rng.range(0.0, std::f64::consts::TAU));
+            p[0] = r32(p[0] + r * t.cos());
+            p[1] = r32(p[1] + r * t.sin());
+            p[2] = r32(p[2] + rng.range(-1.0, 1.0).to_radians());
+        }
+    }
+}
+
+/// The shapes, their transforms this step, and the pair's cache.
+struct Warm<R: Real> {
+    a: Box<Polygon<R, 8>>,
+    b: Box<Polygon<R, 8>>,
+    ta: Transform<R>,
+    tb: Transform<R>,
+    cache: PairCache<R>,
+}
+
+fn warm_pairs<R: Real>(pairs: &[Moving]) -> Vec<Warm<R>> {
+    let poly = |s: &Sh| match g::<R, 8>(s) {
+        G::P(p) => p,
+        _ => unreachable!("8-gons only"),
+    };
+    pairs
+        .iter()
+        .map(|m| Warm {
+            a: poly(&m.shapes.0),
+            b: poly(&m.shapes.1),
+            ta: Transform::IDENTITY,
+            tb: Transform::IDENTITY,
+            cache: PairCache::default(),
+        })
+        .collect()
+}
+
+fn place<R: Real>(warm: &mut [Warm<R>], pairs: &[Moving]) {
+    let t = |p: &[f64; 3]| Transform::new(R::vector(R::from_f64(p[0]), R::from_f64(p[1])), R::from_f64(p[2])).unwrap();
+    for (w, m) in warm.iter_mut().zip(pairs) {
+        (w.ta, w.tb) = (t(&m.poses[0]), t(&m.poses[1]));
+    }
+}
+
+/// One query of every pair, cold or warm started from (and updating) its
+/// cache: the sum of the iterations and the number of answers (an answer of
+/// `None` has no iterations to count).
+fn warm_pass<R: Real>(warm: &mut [Warm<R>], q: Query, cached: bool) -> (u64, u64) {
+    let gjk = Gjk::<R>::new();
+    let (mut iterations, mut answers) = (0u64, 0u64);
+    for w in warm.iter_mut() {
+        let w = black_box(w);
+        let (a, b, ta, tb) = (&*w.a, &*w.b, &w.ta, &w.tb);
+        let cache = &mut w.cache;
+        let n = match (q, cached) {
+            (Query::Intersect, false) => Some(black_box(gjk.intersects(a, ta, b, tb)).iterations),
+            (Query::Intersect, true) => Some(black_box(gjk.intersects_cached(a, ta, b, tb, cache)).iterations),
+            (Query::Distance, false) => black_box(gjk.distance(a, ta, b, tb)).map(|s| s.iterations),
+            (Query::Distance, true) => black_box(gjk.distance_cached(a, ta, b, tb, cache)).map(|s| s.iterations),
+            (Query::Penetration, false) => black_box(gjk.penetration(a, ta, b, tb)).map(|p| p.iterations),
+            (Query::Penetration, true) => black_box(gjk.penetration_cached(a, ta, b, tb, cache)).map(|p| p.iterations),
+            (Query::Manifold, false) => black_box(gjk.manifold(a, ta, b, tb, R::ZERO)).ok().map(|m| m.iterations),
+            (Query::Manifold, true) => {
+                black_box(gjk.manifold_cached(a, ta, b, tb, R::ZERO, cache)).ok().map(|m| m.iterations)
+            }
+        };
+        if let Some(n) = n {
+            iterations += u64::from(n);
+            answers += 1;
+        }
+    }
+    (iterations, answers)
+}
+
+/// The frame-to-frame family: every pass is one step of every pair (moved
+/// untimed), each query timed cold and warm started, f32 and f64, every
+/// pair once (as every family: too many for the branch predictor to learn). Rows: ns per query (median over
+/// steps), cached / cold (median of per-step ratios), and the mean
+/// iterations of each (an answer of `None` counts none).
+fn warm_family(name: &str, passes: usize) {
+    println!("\n{name}: {CASES} pairs of 8-gons, each shape moved by at most 1% of its size and turned by at most 1 degree a step, {passes} steps after one untimed");
+    println!("| query | cold f32 ns | cached f32 ns | cached/cold f32 | iterations cold/cached f32 | cold f64 ns | cached f64 ns | cached/cold f64 | iterations cold/cached f64 |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let queries = [
+        (Query::Intersect, "intersects"),
+        (Query::Distance, "distance"),
+        (Query::Penetration, "penetration"),
+        (Query::Manifold, "manifold"),
+    ];
+    for (q, qn) in queries {
+        let (mut pairs, mut rng) = moving_pairs(21, CASES);
+        let (mut w32, mut w64) = (warm_pairs::<f32>(&pairs), warm_pairs::<f64>(&pairs));
+        // Per contender (cold f32, cached f32, cold f64, cached f64): times and iterations.
+        let mut times = vec![Vec::new(); 4];
+        let mut iterations = [(0u64, 0u64); 4];
+        for pass in 0..=passes {
+            step(&mut pairs, &mut rng);
+            place(&mut w32, &pairs);
+            place(&mut w64, &pairs);
+            for j in 0..4 {
+                let k = (pass + j) % 4;
+                let t = Instant::now();
+                let (n, answers) = match k {
+                    0 => warm_pass(&mut w32, q, false),
+                    1 => warm_pass(&mut w32, q, true),
+                    2 => warm_pass(&mut w64, q, false),
+                    _ => warm_pass(&mut w64, q, true),
+                };
+                let ns = t.elapsed().as_nanos() as f64 / CASES as f64;
+                // The first step fills the caches: untimed.
+                if pass > 0 {
+                    times[k].push(ns);
+                    iterations[k].0 += n;
+                    iterations[k].1 += answers;
+                }
+            }
+        }
+        let mean = |k: usize| iterations[k].0 as f64 / iterations[k].1.max(1) as f64;
+        println!(
+            "| {qn} | {:.1} | {:.1} | {:.2} | {:.2} / {:.2} | {:.1} | {:.1} | {:.2} | {:.2} / {:.2} |",
+            median(times[0].clone()),
+            median(times[1].clone()),
+            ratio(&times[1], &times[0]),
+            mean(0),
+            mean(1),
+            median(times[2].clone()),
+            median(times[3].clone()),
+            ratio(&times[3], &times[2]),
+            mean(2),
+            mean(3),
+        );
+    }
+}
+
 // --- timing ----------------------------------------------------------------------
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -617,6 +777,9 @@ fn main() {
     }
     if wanted("toi_poly8_capsule") {
         toi_family::<8>("toi_poly8_capsule", &tois(16, CASES, &p8, &capsule), passes, &mut rows);
+    }
+    if wanted("warm_poly8") {
+        warm_family("warm_poly8", passes);
     }
     let slower: Vec<String> = rows
         .iter()

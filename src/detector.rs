@@ -18,6 +18,7 @@ use crate::result::{Detection, FeatureId, Manifold, Penetration, RayCast, RayHit
 use crate::shape::SupportMap;
 use crate::simplex::{Payload, Simplex, Vertex, Witness};
 use crate::transform::Transform;
+use crate::warm::PairCache;
 
 /// The narrow-phase detector: configuration plus a penetration solver (EPA
 /// by default), as dyn4j's `Gjk`.
@@ -64,28 +65,37 @@ impl<R: Real, P> Gjk<R, P> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        let pair = Pair::new(a, ta, b, tb);
+        self.intersects_of(&Pair::new(a, ta, b, tb))
+    }
+
+    /// [`intersects`](Self::intersects) of a placed pair.
+    #[inline(always)]
+    fn intersects_of<A, B>(&self, pair: &Pair<'_, R, A, B>) -> Detection
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
         if pair.point_cores() {
-            return point_cores_overlap(&pair, self.config.detect_epsilon());
+            return point_cores_overlap(pair, self.config.detect_epsilon());
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO {
             if let Some((pa, pb)) = pair.small_polygons() {
-                let intersecting = !crate::sat::Axes::new(&pair, pa, pb).separated();
+                let intersecting = !crate::sat::Axes::new(pair, pa, pb).separated();
                 return Detection { intersecting, iterations: 1, status: Status::Converged };
             }
             // A segment: the axes decide, as for two polygons. Not a
             // capsule: its cores are mostly apart by less than the radius,
             // which the axes cannot decide, and GJK then runs after them.
             if pair.radius() == R::ZERO {
-                if let Some(axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
+                if let Some(axes) = crate::sat::Axes::of_segment_and_polygon(pair) {
                     let intersecting = !axes.separated();
                     return Detection { intersecting, iterations: 1, status: Status::Converged };
                 }
             }
         }
         let (intersecting, iterations, status) = intersect(
-            &pair,
+            pair,
             self.config.max_detect_iterations(),
             self.config.detect_epsilon(),
             self.config.distance_epsilon(),
@@ -116,25 +126,34 @@ impl<R: Real, P> Gjk<R, P> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        let pair = Pair::new(a, ta, b, tb);
+        self.distance_of(&Pair::new(a, ta, b, tb))
+    }
+
+    /// [`distance`](Self::distance) of a placed pair.
+    #[inline(always)]
+    fn distance_of<A, B>(&self, pair: &Pair<'_, R, A, B>) -> Option<Separation<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
         if pair.point_cores() {
-            if let Some(ref core) = PointCores::new(&pair) {
+            if let Some(ref core) = PointCores::new(pair) {
                 if core.certainly_within(pair.radius_a() + pair.radius_b()) {
                     return None;
                 }
-                return separation(&pair, &core.separation());
+                return separation(pair, &core.separation());
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
             if let Some(near) = crate::point_polygon::nearest(polygon, p) {
-                return point_polygon_separation(&pair, near, point_is_a);
+                return point_polygon_separation(pair, near, point_is_a);
             }
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
         match pair.core_distance(&mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreProximity::Overlapping { .. } => None,
-            CoreProximity::Separated(ref core) => separation(&pair, core),
+            CoreProximity::Separated(ref core) => separation(pair, core),
         }
     }
 
@@ -161,31 +180,41 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        let pair = Pair::new(a, ta, b, tb);
+        self.penetration_of(&Pair::new(a, ta, b, tb))
+    }
+
+    /// [`penetration`](Self::penetration) of a placed pair.
+    #[inline(always)]
+    fn penetration_of<A, B>(&self, pair: &Pair<'_, R, A, B>) -> Option<Penetration<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
         if pair.point_cores() {
-            if let Some(ref core) = PointCores::new(&pair) {
-                return rounded_overlap(&pair, &core.separation());
+            if let Some(ref core) = PointCores::new(pair) {
+                return rounded_overlap(pair, &core.separation());
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if P::SEPARATING_AXES {
             if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
                 if let Some(near) = crate::point_polygon::nearest(polygon, p) {
-                    return point_polygon_penetration(&pair, near, point_is_a);
+                    return point_polygon_penetration(pair, near, point_is_a);
                 }
             }
             if let Some((pa, pb)) = pair.small_polygons() {
-                let axes = crate::sat::Axes::new(&pair, pa, pb);
+                let axes = crate::sat::Axes::new(pair, pa, pb);
                 if axes.separated() {
                     return None;
                 }
                 let (depth, normal) = axes.penetration();
-                return Some(separating_axes_penetration(&pair, depth, normal));
+                return Some(separating_axes_penetration(pair, depth, normal));
             }
-            if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
-                match rounded_axes(&pair, axes) {
+            if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(pair) {
+                match rounded_axes(pair, axes) {
                     RoundedAxes::Overlapping(depth, normal) => {
-                        return Some(separating_axes_penetration(&pair, depth, normal))
+                        return Some(separating_axes_penetration(pair, depth, normal))
                     }
                     RoundedAxes::Apart => return None,
                     RoundedAxes::Undecided => {}
@@ -195,8 +224,8 @@ impl<R: Real, P> Gjk<R, P> {
         // GJK in a function of its own and its result matched by reference,
         // so this frame holds only the pair and the simplex's points while
         // the solver's polytope is on the stack.
-        match core_proximity(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
-            Proximity::Overlapping(ref enclosing) => Some(solved(&self.solver, &pair, enclosing)),
+        match core_proximity(pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            Proximity::Overlapping(ref enclosing) => Some(solved(&self.solver, pair, enclosing)),
             Proximity::Resolved(penetration) => penetration,
         }
     }
@@ -249,15 +278,34 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
+        self.manifold_by(a, ta, b, tb, margin, || self.contact(a, ta, b, tb))
+    }
+
+    /// [`manifold`](Self::manifold) with the normal and least separation
+    /// from `nearest` (called once the margin is found sound).
+    #[inline(always)]
+    fn manifold_by<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+        margin: R,
+        nearest: impl FnOnce() -> Option<Nearest<R>>,
+    ) -> Result<Manifold<R>, Error>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
         if !margin.is_finite() {
             return Err(Error::NonFinite);
         }
         if margin < R::ZERO || margin > R::MAX_COORDINATE {
             return Err(Error::OutOfRange);
         }
-        let Some((normal, separation, iterations, status)) = self.contact(a, ta, b, tb) else {
-            // Touching to the one query, apart to the other: no point
-            // either would vouch for.
+        let Some((normal, separation, iterations, status)) = nearest() else {
+            // Touching to the one query, apart to the other: no point either
+            // would vouch for.
             return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
         };
         let mut manifold = Manifold::empty(normal, iterations, status);
@@ -273,7 +321,7 @@ impl<R: Real, P> Gjk<R, P> {
     /// normal and depth (negated), with that query's iterations and status.
     /// The same answers as the two queries asked in turn, but GJK runs once:
     /// its simplex, enclosing the origin, goes on to the penetration solver.
-    fn contact<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Contact<R>>
+    fn contact<A, B>(&self, a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<Nearest<R>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
@@ -283,10 +331,9 @@ impl<R: Real, P> Gjk<R, P> {
         // own: GJK twice for overlapping shapes, but the stack peaks at the
         // larger query, where one frame holding both paths peaks higher.
         #[cfg(target_os = "none")]
-        return match in_own_frame(|| self.distance(a, ta, b, tb)) {
-            Some(s) => Some(apart(s)),
-            None => in_own_frame(|| self.penetration(a, ta, b, tb)).map(overlapping),
-        };
+        return nearest(in_own_frame(|| self.distance(a, ta, b, tb)), || {
+            in_own_frame(|| self.penetration(a, ta, b, tb))
+        });
         #[cfg(not(target_os = "none"))]
         self.contact_of(Pair::new(a, ta, b, tb))
     }
@@ -294,7 +341,7 @@ impl<R: Real, P> Gjk<R, P> {
     /// [`contact`](Self::contact) of a placed pair, with one GJK run.
     #[cfg(not(target_os = "none"))]
     #[inline(always)]
-    fn contact_of<A, B>(&self, pair: Pair<'_, R, A, B>) -> Option<Contact<R>>
+    fn contact_of<A, B>(&self, pair: Pair<'_, R, A, B>) -> Option<Nearest<R>>
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
@@ -340,6 +387,140 @@ impl<R: Real, P> Gjk<R, P> {
                 Some(overlapping(solved(&self.solver, &pair, enclosing)))
             }
         }
+    }
+
+    /// [`intersects`](Self::intersects), warm started from `cache` (the
+    /// last step's of this pair, or a new one) and updating it: the same
+    /// verdict. Two polygons of up to eight vertices are decided by the
+    /// axis that separated them last or the triangle that enclosed the
+    /// origin, where either still does; other shapes start GJK along the
+    /// last normal.
+    ///
+    /// ```
+    /// use gjk2d::{Gjk, PairCache, Rectangle, Transform};
+    /// use glam::Vec2;
+    ///
+    /// let gjk = Gjk::<f32>::new();
+    /// let box_ = Rectangle::new(1.0, 1.0)?;
+    /// let mut cache = PairCache::default(); // one per pair, kept between steps
+    /// for step in 0..10 {
+    ///     let there = Transform::from_translation(Vec2::new(2.0 - 0.1 * step as f32, 0.0))?;
+    ///     let cold = gjk.intersects(&box_, &Transform::IDENTITY, &box_, &there);
+    ///     let warm = gjk.intersects_cached(&box_, &Transform::IDENTITY, &box_, &there, &mut cache);
+    ///     assert_eq!(warm.intersecting, cold.intersecting);
+    /// }
+    /// # Ok::<(), gjk2d::Error>(())
+    /// ```
+    pub fn intersects_cached<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+        cache: &mut PairCache<R>,
+    ) -> Detection
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let mut pair = Pair::new(a, ta, b, tb);
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if self.config.detect_epsilon() == R::ZERO {
+            if let Some((pa, pb)) = pair.small_polygons() {
+                return cache.intersects_small(&pair, pa, pb);
+            }
+        }
+        if let Some(d) = cache.first_direction() {
+            pair.first_direction = d;
+        }
+        self.intersects_of(&pair)
+    }
+
+    /// [`distance`](Self::distance), warm started from `cache` and
+    /// updating it, within the same guarantees (its error bound and status
+    /// are its own). GJK starts from the last simplex, its points measured
+    /// again, for polygons of up to eight vertices, and along the last
+    /// normal for other shapes.
+    pub fn distance_cached<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+        cache: &mut PairCache<R>,
+    ) -> Option<Separation<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let pair = Pair::new(a, ta, b, tb);
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((pa, pb)) = pair.small_polygons() {
+            let start = cache.simplex(&pair, pa, pb);
+            let mut simplex = None::<Simplex<R, Witness<R>>>;
+            let (max, epsilon) = (self.config.max_distance_iterations(), self.config.distance_epsilon());
+            return match crate::gjk::distance_loop_from(&pair, &mut simplex, start, max, epsilon) {
+                CoreProximity::Overlapping { simplex, .. } => {
+                    cache.remember_simplex(simplex);
+                    None
+                }
+                CoreProximity::Separated(ref core) => {
+                    cache.remember_simplex(core.simplex);
+                    separation(&pair, core)
+                }
+            };
+        }
+        along_last_normal(pair, ta, cache, |pair| self.distance_of(pair), |s| s.normal)
+    }
+
+    /// [`penetration`](Self::penetration), warm started from `cache` and
+    /// updating it, within the same guarantees. Two polygons of up to eight
+    /// vertices get the cold answer to the bit, from the last few leading
+    /// axes alone while the motion since cannot have let another catch up;
+    /// other shapes start GJK along the last normal.
+    pub fn penetration_cached<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+        cache: &mut PairCache<R>,
+    ) -> Option<Penetration<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        let pair = Pair::new(a, ta, b, tb);
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if P::SEPARATING_AXES {
+            if let Some((pa, pb)) = pair.small_polygons() {
+                return cache.penetration_small(&pair, pa, pb);
+            }
+        }
+        along_last_normal(pair, ta, cache, |pair| self.penetration_of(pair), |p| p.normal)
+    }
+
+    /// [`manifold`](Self::manifold), its distance and penetration queries
+    /// warm started from `cache` ([`distance_cached`](Self::distance_cached),
+    /// [`penetration_cached`](Self::penetration_cached)) and updating it.
+    pub fn manifold_cached<A, B>(
+        &self,
+        a: &A,
+        ta: &Transform<R>,
+        b: &B,
+        tb: &Transform<R>,
+        margin: R,
+        cache: &mut PairCache<R>,
+    ) -> Result<Manifold<R>, Error>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+        P: PenetrationSolver<R>,
+    {
+        self.manifold_by(a, ta, b, tb, margin, || {
+            nearest(self.distance_cached(a, ta, b, tb, cache), || self.penetration_cached(a, ta, b, tb, cache))
+        })
     }
 
     /// Casts `ray` (world coordinates) against `shape` placed by `transform`,
@@ -560,6 +741,48 @@ impl<R: Real, P> Gjk<R, P> {
             |ta, tb| in_own_frame(|| self.distance(a, ta, b, tb)),
             |ta, tb| in_own_frame(|| self.penetration(a, ta, b, tb)),
         )
+    }
+}
+
+/// `query` of the pair with GJK's first search direction from `cache`,
+/// whose answer's normal (`normal`) the cache keeps for the next step.
+#[inline(always)]
+fn along_last_normal<'s, R, A, B, T>(
+    mut pair: Pair<'s, R, A, B>,
+    ta: &Transform<R>,
+    cache: &mut PairCache<R>,
+    query: impl FnOnce(&Pair<'s, R, A, B>) -> Option<T>,
+    normal: impl FnOnce(&T) -> R::Vector,
+) -> Option<T>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    if let Some(d) = cache.first_direction() {
+        pair.first_direction = d;
+    }
+    let found = query(&pair);
+    if let Some(found) = &found {
+        cache.remember_normal(ta.inverse_rotate(V2::from_glam(normal(found))));
+    }
+    found
+}
+
+/// What a manifold keeps of the query that found its normal: the normal,
+/// the least separation (negative: depth), iterations and status.
+type Nearest<R> = (<R as Real>::Vector, R, u32, Status);
+
+/// The distance query's answer where the shapes are apart, else the
+/// penetration query's; `None` where neither vouches for a normal.
+#[inline(always)]
+fn nearest<R: Real>(
+    separation: Option<Separation<R>>,
+    penetration: impl FnOnce() -> Option<Penetration<R>>,
+) -> Option<Nearest<R>> {
+    match separation {
+        Some(s) => Some((s.normal, s.distance, s.iterations, s.status)),
+        None => penetration().map(|p| (p.normal, -p.depth, p.iterations, p.status)),
     }
 }
 
@@ -887,16 +1110,15 @@ where
     }
 }
 
-/// The manifold's normal, least separation, iterations and status.
-type Contact<R> = (<R as Real>::Vector, R, u32, Status);
-
 /// The manifold's start from shapes apart.
-fn apart<R: Real>(s: Separation<R>) -> Contact<R> {
+#[cfg(not(target_os = "none"))]
+fn apart<R: Real>(s: Separation<R>) -> Nearest<R> {
     (s.normal, s.distance, s.iterations, s.status)
 }
 
 /// The manifold's start from shapes that overlap (or touch).
-fn overlapping<R: Real>(p: Penetration<R>) -> Contact<R> {
+#[cfg(not(target_os = "none"))]
+fn overlapping<R: Real>(p: Penetration<R>) -> Nearest<R> {
     (p.normal, -p.depth, p.iterations, p.status)
 }
 

@@ -116,7 +116,30 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let simplex = slot.insert(first_simplex(pair));
+    distance_loop_from(pair, slot, None, max_iterations, epsilon)
+}
+
+/// GJK's distance loop from a simplex of the caller's, if given (a warm
+/// start: the last step's simplex, its points measured again), else from
+/// the first support. Any points of the Minkowski difference will do: the
+/// loop ends on the same criteria, so its answers keep their guarantees
+/// however it starts.
+#[inline(always)]
+pub(crate) fn distance_loop_from<'s, R, A, B, P>(
+    pair: &Pair<'_, R, A, B>,
+    slot: &'s mut Option<Simplex<R, P>>,
+    start: Option<Simplex<R, P>>,
+    max_iterations: u32,
+    epsilon: R,
+) -> CoreProximity<'s, R, P>
+where
+    R: Real,
+    P: Payload<R>,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let start = start.unwrap_or_else(|| first_simplex(pair));
+    let simplex = slot.insert(start);
     let scale = pair.scale();
     let tolerance = epsilon * scale;
     // How close the bounds must be for a repeat of a just-dropped vertex to

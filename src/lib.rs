@@ -16,6 +16,9 @@
 //!   over a step first come within a target distance.
 //! - [`Gjk::manifold`]: up to two contact points with feature ids, within a
 //!   speculative margin, for a physics step.
+//! - The `_cached` queries ([`Gjk::intersects_cached`] and the others):
+//!   the same answers, warm started from a [`PairCache`] kept per pair
+//!   between steps.
 //!
 //! Shapes: [`Circle`], [`Polygon`], [`Rectangle`], [`Triangle`], [`Segment`],
 //! [`Capsule`], [`Ellipse`], [`HalfEllipse`], [`Slice`], [`Rounded`], and your
@@ -69,6 +72,7 @@ pub mod shape;
 mod simplex;
 mod transform;
 mod trig;
+mod warm;
 
 #[cfg(feature = "std")]
 mod batch;
@@ -93,6 +97,7 @@ pub use shape::{
     NO_FEATURE,
 };
 pub use transform::Transform;
+pub use warm::PairCache;
 
 #[cfg(feature = "std")]
 pub use batch::EpaVec;

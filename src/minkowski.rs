@@ -306,6 +306,28 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.rotate(v)
     }
 
+    /// B's placement in the pair frame: the rotation's cosine and sine, and
+    /// its reference point's offset (what a warm start measures motion by).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn pose(&self) -> (R, R, V2<R>) {
+        (self.cos, self.sin, self.offset)
+    }
+
+    /// Each shape's bounding radius about its center.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn bounding_radii(&self) -> (R, R) {
+        (self.a.bounding_radius(), self.b.bounding_radius())
+    }
+
+    /// A direction of the pair frame in B's frame.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn pair_vector_to_b(&self, v: V2<R>) -> V2<R> {
+        self.inverse_rotate(v)
+    }
+
     /// A point of B's frame (relative to its reference point) in the pair
     /// frame.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]

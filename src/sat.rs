@@ -42,6 +42,14 @@ impl<R: Real> Padded<R> {
     }
 }
 
+/// How far `other` reaches past edge `i` of `own` along its outward normal
+/// `n` (not unit): the least dot product of `other`'s vertices with it,
+/// measured from the edge.
+#[inline(always)]
+fn reach<R: Real>(own: &Padded<R>, other: &Padded<R>, n: V2<R>, i: usize) -> R {
+    R::min_dot8(&other.xs, &other.ys, n) - n.dot(own.v[i % M])
+}
+
 /// For every edge slot of `own`: the outward normal (not unit) and the least
 /// dot product of `other`'s vertices with it, measured from the edge (how
 /// far `other` reaches past the edge's line, times the normal's length).
@@ -50,11 +58,87 @@ impl<R: Real> Padded<R> {
 fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
     let normals: [V2<R>; M] = core::array::from_fn(|i| own.normal(i));
     let least = core::array::from_fn(|i| {
-        let n = normals[i];
-        let reach = R::min_dot8(&other.xs, &other.ys, n) - n.dot(own.v[i]);
+        let reach = reach(own, other, normals[i], i);
         core::hint::select_unpredictable(i < own.len, reach, -R::INFINITY)
     });
     (normals, least)
+}
+
+/// The pair's two small polygons, both in A's frame relative to A's
+/// reference point: what every axis is measured on.
+pub(crate) struct Polygons<R> {
+    a: Padded<R>,
+    b: Padded<R>,
+}
+
+impl<R: Real> Polygons<R> {
+    /// The pair's two small polygons (`a`, `b`, as
+    /// [`Pair::small_polygons`] gives them), B's vertices placed once.
+    #[inline(always)]
+    pub fn new<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Self
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        Self { a: Padded::new(a, |p| p), b: Padded::new(b, |p| pair.b_to_pair(p)) }
+    }
+
+    /// The support point of B - A along `d` and its id (A's vertex index
+    /// in the high 16 bits, B's in the low), as GJK's supports name them.
+    /// The padding copies vertex 0, after it: the first greatest is a vertex.
+    pub fn support(&self, d: V2<R>) -> (V2<R>, u32) {
+        let along = |p: &Padded<R>, d: V2<R>| {
+            let dots: [R; M] = core::array::from_fn(|i| p.v[i].dot(d));
+            first_max(&dots)
+        };
+        let (ia, ib) = (along(&self.a, -d), along(&self.b, d));
+        (self.b.v[ib] - self.a.v[ia], ((ia as u32) << 16) | ib as u32)
+    }
+
+    /// Axis `slot` alone (A's edges first, then B's, as in [`Axes`]): its
+    /// normal from A towards B (not unit) and the least reach along it,
+    /// computed as [`Axes::new`] computes them, to the bit. `None` for a
+    /// slot past either polygon's last edge.
+    #[inline(always)]
+    pub fn axis(&self, slot: usize) -> Option<(V2<R>, R)> {
+        if slot < self.a.len {
+            let n = self.a.normal(slot);
+            Some((n, reach(&self.a, &self.b, n, slot)))
+        } else if slot >= M && slot - M < self.b.len {
+            let n = self.b.normal(slot - M);
+            Some((-n, reach(&self.b, &self.a, n, slot - M)))
+        } else {
+            None
+        }
+    }
+}
+
+/// Whether edge `slot` of the pair's small polygons (A's edges, then B's
+/// from slot [`M`]) separates them by more than `margin` times its normal's
+/// length (by `|x| + |y|`), measured in the frame of the edge's polygon: its
+/// normal turned once, no vertex of the other placed. With a margin above
+/// rounding, [`Axes::separated`] then says apart too.
+pub(crate) fn separates_by<R, A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], slot: usize, margin: R) -> bool
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let edge = |v: &[V2<R>], i: usize| {
+        let (p, q) = (*v.get(i)?, *v.get(i + 1).or(v.first())?);
+        Some((p, (q - p).perp_cw()))
+    };
+    let least = |v: &[V2<R>], d: V2<R>| v.iter().fold(R::INFINITY, |m, &p| m.min(d.dot(p)));
+    let offset = pair.pose().2;
+    let reach = if slot < M {
+        let Some((p, n)) = edge(a, slot) else { return false };
+        (n, least(b, pair.pair_vector_to_b(n)) + n.dot(offset) - n.dot(p))
+    } else {
+        let Some((p, n)) = edge(b, slot - M) else { return false };
+        let m = pair.b_vector_to_pair(n);
+        (n, least(a, m) - n.dot(p) - m.dot(offset))
+    };
+    reach.1 > margin * (reach.0.x.abs() + reach.0.y.abs())
 }
 
 /// What the separating axes say about two polygon cores.
@@ -66,15 +150,21 @@ pub(crate) struct Axes<R> {
 impl<R: Real> Axes<R> {
     /// The separating axes of the pair's two small polygons (`a`, `b`, as
     /// [`Pair::small_polygons`] gives them).
+    #[inline(always)]
     pub fn new<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Self
     where
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        let pa = Padded::new(a, |p| p);
-        let pb = Padded::new(b, |p| pair.b_to_pair(p));
-        let (na, la) = faces(&pa, &pb);
-        let (nb, lb) = faces(&pb, &pa);
+        Self::of(&Polygons::new(pair, a, b))
+    }
+
+    /// Every axis of the two polygons.
+    #[inline(always)]
+    pub fn of(polygons: &Polygons<R>) -> Self {
+        let (pa, pb) = (&polygons.a, &polygons.b);
+        let (na, la) = faces(pa, pb);
+        let (nb, lb) = faces(pb, pa);
         // B's face normals point away from B, towards A: turned round, every
         // normal points from A towards B.
         let normals = core::array::from_fn(|i| if i < M { na[i] } else { -nb[i - M] });
@@ -103,24 +193,66 @@ impl<R: Real> Axes<R> {
     /// towards B): the penetration depth and normal of overlapping
     /// polygons. Ties go to the first axis, A's before B's.
     pub fn penetration(&self) -> (R, V2<R>) {
-        // Lengths scaled by the larger component first, so the squares of a
-        // tiny polygon's normals neither underflow nor lose their digits.
-        let lengths: [R; 2 * M] = core::array::from_fn(|i| scaled_length(self.normals[i]));
-        let separation: [R; 2 * M] = core::array::from_fn(|i| {
-            let s = self.least[i] / lengths[i];
-            // A slot past the last edge (no normal) never leads.
-            if lengths[i] > R::ZERO {
-                s
-            } else {
-                -R::INFINITY
-            }
-        });
-        let best = first_max(&separation);
-        let normal = self.normals[best];
-        let normal = normal.try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
-        // From zero: a separation of -0 is a depth of +0.
-        (R::ZERO - separation[best], normal)
+        let (separation, best) = self.separations();
+        penetration_along(separation[best], self.normals[best])
     }
+
+    /// The axis that separates the polygons the most, measured unscaled
+    /// (a cheap pick: any axis that separates proves it).
+    pub fn most_separating(&self) -> usize {
+        first_max(&self.least)
+    }
+
+    /// [`penetration`](Self::penetration), with the `count` axes of the
+    /// greatest separation (a bit per slot) and how far the first of them
+    /// leads every other axis: how much the axes may move before one not
+    /// among them could win.
+    #[inline(always)]
+    pub fn penetration_leaders(&self, count: usize) -> ((R, V2<R>), u32, R) {
+        let (mut separation, best) = self.separations();
+        let answer = penetration_along(separation[best], self.normals[best]);
+        let first = separation[best];
+        let (mut leaders, mut next) = (0u32, best);
+        for _ in 0..count {
+            leaders |= 1 << next;
+            separation[next] = -R::INFINITY;
+            next = first_max(&separation);
+        }
+        (answer, leaders, first - separation[next])
+    }
+
+    /// Every axis's separation along its unit normal (minus infinity for
+    /// slots with no edge), and the first greatest.
+    #[inline(always)]
+    fn separations(&self) -> ([R; 2 * M], usize) {
+        let separation: [R; 2 * M] = core::array::from_fn(|i| scaled_separation(self.normals[i], self.least[i]));
+        let best = first_max(&separation);
+        (separation, best)
+    }
+}
+
+/// The separation along an axis's unit normal, from its normal (not unit)
+/// and least reach; minus infinity for an axis with no normal (a slot past
+/// the last edge), which then never leads.
+#[inline(always)]
+pub(crate) fn scaled_separation<R: Real>(normal: V2<R>, least: R) -> R {
+    // Lengths scaled by the larger component first, so the squares of a
+    // tiny polygon's normals neither underflow nor lose their digits.
+    let length = scaled_length(normal);
+    let s = least / length;
+    if length > R::ZERO {
+        s
+    } else {
+        -R::INFINITY
+    }
+}
+
+/// The depth and unit normal of the axis whose separation is `separation`.
+#[inline(always)]
+pub(crate) fn penetration_along<R: Real>(separation: R, normal: V2<R>) -> (R, V2<R>) {
+    let normal = normal.try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
+    // From zero: a separation of -0 is a depth of +0.
+    (R::ZERO - separation, normal)
 }
 
 /// `|n|`, scaled by the larger component first, so the square of a tiny

@@ -1,0 +1,415 @@
+//! Warm starting: [`PairCache`], what one query of a pair leaves for the
+//! next query of the same pair a step later, so that query starts where
+//! the last one ended.
+//!
+//! Every cached start is checked against the shapes as they are now before
+//! it decides anything, so a stale, foreign or garbled cache only costs the
+//! cold query:
+//! - a separating axis of two small polygons is measured again, and proves
+//!   them apart when it still separates them;
+//! - a triangle of support ids is looked up again, and proves them
+//!   overlapping when it still encloses the origin by more than rounding;
+//! - GJK's last simplex, looked up again, is where GJK starts: it ends on
+//!   the same criteria from any start;
+//! - the few axes of the least overlap are evaluated alone only while the
+//!   motion since they led (bounded by the change of pose times the shapes'
+//!   radii) is too small to let any other axis catch up, and only for the
+//!   very shapes they were measured on (their fingerprint): the answer is
+//!   then the cold query's, to the bit.
+
+use crate::minkowski::NO_ID;
+use crate::real::{Real, V2};
+
+/// What the queries of one pair of shapes leave for the next step: a small
+/// `Copy` value, one per pair, kept between steps by the caller and passed
+/// to the `_cached` queries ([`Gjk::intersects_cached`](crate::Gjk::intersects_cached),
+/// [`distance_cached`](crate::Gjk::distance_cached),
+/// [`penetration_cached`](crate::Gjk::penetration_cached),
+/// [`manifold_cached`](crate::Gjk::manifold_cached)), which read and update it.
+///
+/// The answers are the cold queries' (the same verdicts, and for polygons
+/// of up to eight vertices the same penetration to the bit), within the
+/// same guarantees; a cache holds only where to start. One that is stale,
+/// from another pair, or garbage is detected and costs a cold query, never
+/// a wrong answer. [`Default`] is cold.
+///
+/// The queries' `iterations` count the work done: 0 where the cache alone
+/// decided (its axis still separates, its triangle still encloses the
+/// origin, its leading axes still lead).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(any(target_os = "none", target_family = "wasm"), allow(dead_code))]
+pub struct PairCache<R: Real> {
+    /// The last simplex of two small polygons by its support ids (A's
+    /// vertex in the high 16 bits, B's in the low), [`NO_ID`] in empty slots.
+    ids: [u32; 3],
+    /// The axis that last separated two small polygons (A's edges, then
+    /// B's from slot 8), [`NO_ID`] for none.
+    separating: u32,
+    /// The opposite of the last normal, in A's frame: GJK's first search
+    /// direction for shapes other than small polygons. Zero for none.
+    direction: [R; 2],
+    /// The `LEADERS` axes of two small polygons with the least overlap
+    /// (greatest separation), a bit per slot (none: zero), and how far the
+    /// first of them leads every other axis.
+    leaders: u32,
+    lead: R,
+    /// When `leaders` were measured: B's rotation in A's frame (cosine,
+    /// sine), the offset of B's center from A's in A's frame and in B's,
+    /// each shape's bounding radius about its center, and the size of the
+    /// coordinates (for rounding): what turns a change of pose into a bound
+    /// on how far any axis's separation moved.
+    pose: [R; 6],
+    radii: [R; 2],
+    reach: R,
+    /// How far the axes could have moved at the last check: a lead no
+    /// larger is not worth keeping (the next check would likely fail too).
+    moved: R,
+    /// The two polygons `leaders` were measured on.
+    fingerprint: u64,
+}
+
+impl<R: Real> Default for PairCache<R> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<R: Real> PairCache<R> {
+    /// A cold cache: the first query runs as the cold one does, and fills it.
+    pub const fn new() -> Self {
+        Self {
+            ids: [NO_ID; 3],
+            separating: NO_ID,
+            direction: [R::ZERO; 2],
+            leaders: 0,
+            lead: R::ZERO,
+            pose: [R::ZERO; 6],
+            radii: [R::ZERO; 2],
+            reach: R::ZERO,
+            moved: R::ZERO,
+            fingerprint: 0,
+        }
+    }
+
+    /// Forgets everything: the next query runs cold.
+    pub fn clear(&mut self) {
+        *self = Self::new();
+    }
+
+    /// GJK's first search direction, if the cache holds a sound one: finite
+    /// and of about unit length (garbage could overflow a support's dots).
+    pub(crate) fn first_direction(&self) -> Option<V2<R>> {
+        let d = V2::new(self.direction[0], self.direction[1]);
+        let dd = d.length_squared();
+        (dd >= R::HALF * R::HALF && dd <= R::from_u32(4)).then_some(d)
+    }
+
+    /// Keeps the opposite of a result's unit normal (in A's frame) as the
+    /// next first search direction.
+    pub(crate) fn remember_normal(&mut self, normal: V2<R>) {
+        self.direction = [-normal.x, -normal.y];
+    }
+}
+
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod small {
+    //! The warm starts of two small polygons (host only, as their separating
+    //! axes are).
+
+    use super::PairCache;
+    use crate::minkowski::{MinkowskiVertex, Pair, NO_ID};
+    use crate::real::{Real, V2};
+    use crate::result::{Detection, Penetration, Status};
+    use crate::sat::{penetration_along, scaled_separation, separates_by, Axes, Polygons};
+    use crate::shape::SupportMap;
+    use crate::simplex::{Payload, Simplex, Vertex};
+
+    /// How far inside the cached triangle the origin must be, and by how
+    /// much the leading axes must lead, over the coordinates' size: far
+    /// above the rounding of either test, so the cold query's computed
+    /// answer is certainly the cached one.
+    const ROUNDING: u32 = 64;
+
+    /// How many axes of the least overlap a cache keeps: two faces nearly
+    /// parallel, as in resting contact, give two axes nearly tied, and the
+    /// lead over the rest is what lets a step skip the others.
+    pub(super) const LEADERS: usize = 4;
+
+    /// `|x| + |y|`: at least the length, with no square root.
+    #[inline(always)]
+    fn l1<R: Real>(v: V2<R>) -> R {
+        v.x.abs() + v.y.abs()
+    }
+
+    /// Offset `c` of B's center from A's (in A's frame) in B's frame.
+    #[inline(always)]
+    fn seen_from_b<R: Real>(cos: R, sin: R, c: V2<R>) -> V2<R> {
+        V2::new(cos * c.x + sin * c.y, cos * c.y - sin * c.x)
+    }
+
+    /// Both polygons' vertex counts and coordinates, mixed into 64 bits:
+    /// each coordinate's bits salted by its place and multiplied by an odd
+    /// constant (independent products, no chain), then summed.
+    fn fingerprint<R: Real>(a: &[V2<R>], b: &[V2<R>]) -> u64 {
+        const SALT: u64 = 0x9E37_79B9_7F4A_7C15;
+        const MIX_X: u64 = 0xD6E8_FEB8_6659_FD93;
+        const MIX_Y: u64 = 0xA076_1D64_78BD_642F;
+        let mut sum = ((a.len() as u64) << 32 | b.len() as u64).wrapping_mul(MIX_X);
+        let mut salt = SALT;
+        for v in a.iter().chain(b) {
+            let (x, y) = (v.x.to_f64().to_bits(), v.y.to_f64().to_bits());
+            sum = sum.wrapping_add((x ^ salt).wrapping_mul(MIX_X)).wrapping_add((y ^ salt).wrapping_mul(MIX_Y));
+            salt = salt.wrapping_add(SALT);
+        }
+        (sum ^ (sum >> 32)).wrapping_mul(MIX_X)
+    }
+
+    /// Whether triangle `w` encloses the origin by more than `margin`
+    /// (times each edge's length, by [`l1`], plus the coordinates' size
+    /// `size`, which covers the cross products' own rounding).
+    fn surely_encloses<R: Real>(w: [V2<R>; 3], margin: R, size: R) -> bool {
+        let area = (w[1] - w[0]).cross(w[2] - w[0]);
+        let sign = if area > R::ZERO { R::ONE } else { -R::ONE };
+        (0..3).all(|k| {
+            let (p, q) = (w[k], w[(k + 1) % 3]);
+            let inside = p.cross(q) * sign;
+            area != R::ZERO && inside > margin * (l1(q - p) + size)
+        })
+    }
+
+    impl<R: Real> PairCache<R> {
+        /// Vertex `id` of the Minkowski difference of the pair's small
+        /// polygons, measured now; `None` for ids out of range.
+        fn vertex<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], id: u32) -> Option<MinkowskiVertex<R>>
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let (pa, pb) = (*a.get((id >> 16) as usize)?, pair.b_to_pair(*b.get((id & 0xFFFF) as usize)?));
+            Some(MinkowskiVertex { w: pb - pa, a: pa, b: pb, id })
+        }
+
+        /// The size of the pair's coordinates in its frame: twice each
+        /// bounding radius (a vertex from the reference point) and B's offset.
+        fn size<A, B>(pair: &Pair<'_, R, A, B>) -> R
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            R::from_u32(8) * pair.scale() + l1(pair.pose().2)
+        }
+
+        /// Whether the cached triangle of ids still encloses the origin, by
+        /// more than rounding.
+        fn encloses<A, B>(&self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> bool
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let [p, q, r] = self.ids.map(|id| Self::vertex(pair, a, b, id).map(|v| v.w));
+            let (Some(p), Some(q), Some(r)) = (p, q, r) else { return false };
+            let size = Self::size(pair);
+            surely_encloses([p, q, r], R::from_u32(ROUNDING) * R::EPSILON * size, size)
+        }
+
+        /// A triangle of supports along three directions a third of a turn
+        /// apart, kept if it encloses the origin by more than rounding: the
+        /// next step's proof of overlap.
+        fn refill_triangle<A, B>(&mut self, pair: &Pair<'_, R, A, B>, polygons: &Polygons<R>)
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let d = pair.first_direction;
+            let (c, s) = (R::ZERO, R::ONE);
+            let turn = |s: R| V2::new(c * d.x - s * d.y, s * d.x + c * d.y);
+            let supports = [polygons.support(d), polygons.support(turn(s)), polygons.support(turn(-s))];
+            let size = Self::size(pair);
+            let margin = R::from_u32(ROUNDING) * R::EPSILON * size;
+            self.ids =
+                if surely_encloses(supports.map(|s| s.0), margin, size) { supports.map(|s| s.1) } else { [NO_ID; 3] };
+        }
+
+        /// The intersection test of two small polygons: the cached
+        /// separating axis or enclosing triangle if either still decides,
+        /// else every axis (and the cache refilled). The verdict is the
+        /// cold test's.
+        pub(crate) fn intersects_small<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Detection
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let decided = |intersecting| Detection { intersecting, iterations: 0, status: Status::Converged };
+            if self.separating == NO_ID {
+                if self.encloses(pair, a, b) {
+                    return decided(true);
+                }
+            } else {
+                let margin = R::from_u32(ROUNDING) * R::EPSILON * Self::size(pair);
+                if separates_by(pair, a, b, self.separating as usize, margin) {
+                    return decided(false);
+                }
+            }
+            let polygons = Polygons::new(pair, a, b);
+            let axes = Axes::of(&polygons);
+            let separated = axes.separated();
+            if separated {
+                self.separating = axes.most_separating() as u32;
+            } else {
+                self.separating = NO_ID;
+                self.refill_triangle(pair, &polygons);
+            }
+            Detection { intersecting: !separated, iterations: 1, status: Status::Converged }
+        }
+
+        /// The last leading axes, if the motion since cannot have let any
+        /// other axis catch up with them (nor separate). Seen from A, B's
+        /// vertices move by at most its center's move plus the rotation's
+        /// change times B's radius about its center; seen from B, A's
+        /// likewise: a bound on each axis's move, A's axes and B's.
+        fn leaders_hold<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Option<u32>
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            // No pose kept (or NaN): nothing to measure the motion from.
+            let kept = self.reach > R::ZERO;
+            if !kept {
+                return None;
+            }
+            let (cos, sin, _) = pair.pose();
+            let c = pair.centers;
+            let [cos0, sin0, x0, y0, u0, v0] = self.pose;
+            let [radius_a, radius_b] = self.radii;
+            let turn = V2::new(cos - cos0, sin - sin0).length();
+            let moved_a = (c - V2::new(x0, y0)).length();
+            let moved_b = (seen_from_b(cos, sin, c) - V2::new(u0, v0)).length();
+            let each = (moved_a + turn * radius_b).max(moved_b + turn * radius_a);
+            let rounding = R::from_u32(ROUNDING) * R::EPSILON * (self.reach + moved_a);
+            // The first leader may fall by `each`, any other axis rise by it.
+            self.moved = R::TWO * each + rounding;
+            // Written so that NaN anywhere fails it.
+            let holds = self.leaders != 0 && self.lead > self.moved;
+            (holds && self.fingerprint == fingerprint(a, b)).then_some(self.leaders)
+        }
+
+        /// Keeps the pose and the shapes' radii, and the leading axes with
+        /// their lead if that exceeds the last motion (the shapes'
+        /// fingerprint is then worth taking).
+        fn remember_leaders<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], leaders: u32, lead: R)
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let (cos, sin, _) = pair.pose();
+            let c = pair.centers;
+            let from_b = seen_from_b(cos, sin, c);
+            let centre_a = V2::<R>::from_glam(pair.a_center());
+            let (radius_a, radius_b) = pair.bounding_radii();
+            self.separating = NO_ID;
+            self.pose = [cos, sin, c.x, c.y, from_b.x, from_b.y];
+            self.radii = [radius_a, radius_b];
+            self.reach = R::TWO * (l1(centre_a) + l1(c) + radius_a + radius_b);
+            if lead > self.moved {
+                (self.leaders, self.lead, self.fingerprint) = (leaders, lead, fingerprint(a, b));
+            } else {
+                self.leaders = 0;
+            }
+        }
+
+        /// The penetration by the leading axes alone, as [`Axes`] would
+        /// give it from every axis: the first greatest separation among
+        /// them (`None` for a leader that separates, or a slot out of range).
+        fn by_leaders(&mut self, polygons: &Polygons<R>, leaders: u32) -> Option<Option<(R, V2<R>)>> {
+            let mut best: Option<(R, V2<R>)> = None;
+            // Set bits in ascending order: ties go to the first, as in `Axes`.
+            let mut rest = leaders;
+            while rest != 0 {
+                let slot = rest.trailing_zeros() as usize;
+                rest &= rest - 1;
+                let (normal, least) = polygons.axis(slot)?;
+                if least > R::ZERO {
+                    // It separates now: so would the cold query say.
+                    (self.separating, self.leaders) = (slot as u32, 0);
+                    return Some(None);
+                }
+                let s = scaled_separation(normal, least);
+                if best.is_none_or(|(b, _)| s > b) {
+                    best = Some((s, normal));
+                }
+            }
+            best.map(|(s, normal)| Some(penetration_along(s, normal)))
+        }
+
+        /// The penetration of two small polygons (`None`: apart), as the
+        /// cold query answers it by their separating axes, to the bit: from
+        /// the cached separating axis or the cached leading axes alone where
+        /// they still decide, else from every axis (and the cache refilled).
+        pub(crate) fn penetration_small<A, B>(
+            &mut self,
+            pair: &Pair<'_, R, A, B>,
+            a: &[V2<R>],
+            b: &[V2<R>],
+        ) -> Option<Penetration<R>>
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let polygons = Polygons::new(pair, a, b);
+            let found = |(depth, normal): (R, V2<R>), iterations| Penetration {
+                normal: pair.to_world_vector(normal),
+                depth,
+                error_bound: R::ZERO,
+                iterations,
+                status: Status::Converged,
+            };
+            if polygons.axis(self.separating as usize).is_some_and(|(_, least)| least > R::ZERO) {
+                return None;
+            }
+            if let Some(leaders) = self.leaders_hold(pair, a, b) {
+                if let Some(answer) = self.by_leaders(&polygons, leaders) {
+                    return answer.map(|answer| found(answer, 0));
+                }
+            }
+            let axes = Axes::of(&polygons);
+            if axes.separated() {
+                (self.separating, self.leaders) = (axes.most_separating() as u32, 0);
+                return None;
+            }
+            let (answer, leaders, lead) = axes.penetration_leaders(LEADERS);
+            self.remember_leaders(pair, a, b, leaders, lead);
+            Some(found(answer, 1))
+        }
+
+        /// The cached simplex of two small polygons, its points measured
+        /// now: GJK's start. `None` when the cache holds none or an id is
+        /// out of range.
+        pub(crate) fn simplex<A, B, P>(
+            &self,
+            pair: &Pair<'_, R, A, B>,
+            a: &[V2<R>],
+            b: &[V2<R>],
+        ) -> Option<Simplex<R, P>>
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+            P: Payload<R>,
+        {
+            let [first, second, third] = self.ids;
+            let mut simplex = Simplex::new(Vertex::from_minkowski(&Self::vertex(pair, a, b, first)?));
+            // A repeated id would make a flat simplex: dropped.
+            if second != NO_ID && second != first {
+                simplex.push(Vertex::from_minkowski(&Self::vertex(pair, a, b, second)?));
+            }
+            if third != NO_ID && third != first && third != second {
+                simplex.push(Vertex::from_minkowski(&Self::vertex(pair, a, b, third)?));
+            }
+            Some(simplex)
+        }
+
+        /// Keeps GJK's last simplex (by its ids) for the next step.
+        pub(crate) fn remember_simplex<P: Payload<R>>(&mut self, simplex: &Simplex<R, P>) {
+            self.ids = simplex.ids();
+        }
+    }
+}
