@@ -369,3 +369,21 @@ pub(crate) fn generate(scale: f64) -> Vec<Family> {
     }
     out
 }
+
+/// `count` pairs of 8-gons for the frame-to-frame family, placed as poly8's
+/// (about half overlapping), each with B's motion a step: a velocity of at
+/// most 1% of B's size and a spin of at most 1 degree.
+pub(crate) fn frame_pairs(count: usize) -> Vec<(Sh, Sh, [f64; 2], f64)> {
+    let mut rng = Rng(0x7761_726d);
+    let mut poly = |r: &mut Rng, c: [f64; 2]| random_poly(r, 8, 1.0, 1.0, c);
+    let mut out = Vec::with_capacity(count);
+    while out.len() < count {
+        let (a, b) = place_pair(&mut rng, &mut poly.clone(), &mut poly, [0.0, 0.0], 1.0);
+        let (_, size) = b.bounds();
+        let dir = rng.unit();
+        let speed = 0.01 * size * rng.f();
+        let spin = rng.range(-1.0, 1.0).to_radians();
+        out.push((a, b, [dir[0] * speed, dir[1] * speed], spin));
+    }
+    out
+}
