@@ -327,19 +327,20 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        // On bare metal the two queries in turn, each in a frame of its
-        // own: GJK twice for overlapping shapes, but the stack peaks at the
-        // larger query, where one frame holding both paths peaks higher.
-        #[cfg(target_os = "none")]
+        // On bare metal and wasm the two queries in turn, each in a frame
+        // of its own: GJK twice for overlapping shapes, but the stack peaks
+        // at the larger query (one frame holding both paths peaks higher),
+        // and no third copy of GJK's loop is linked.
+        #[cfg(any(target_os = "none", target_family = "wasm"))]
         return nearest(in_own_frame(|| self.distance(a, ta, b, tb)), || {
             in_own_frame(|| self.penetration(a, ta, b, tb))
         });
-        #[cfg(not(target_os = "none"))]
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         self.contact_of(Pair::new(a, ta, b, tb))
     }
 
     /// [`contact`](Self::contact) of a placed pair, with one GJK run.
-    #[cfg(not(target_os = "none"))]
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     fn contact_of<A, B>(&self, pair: Pair<'_, R, A, B>) -> Option<Nearest<R>>
     where
@@ -1111,13 +1112,13 @@ where
 }
 
 /// The manifold's start from shapes apart.
-#[cfg(not(target_os = "none"))]
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 fn apart<R: Real>(s: Separation<R>) -> Nearest<R> {
     (s.normal, s.distance, s.iterations, s.status)
 }
 
 /// The manifold's start from shapes that overlap (or touch).
-#[cfg(not(target_os = "none"))]
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 fn overlapping<R: Real>(p: Penetration<R>) -> Nearest<R> {
     (p.normal, -p.depth, p.iterations, p.status)
 }
@@ -1125,7 +1126,7 @@ fn overlapping<R: Real>(p: Penetration<R>) -> Nearest<R> {
 /// What the manifold's GJK run leaves: the separation of shapes apart, the
 /// penetration of rounded shapes whose cores are apart, or the simplex that
 /// encloses the origin for the solver.
-#[cfg(not(target_os = "none"))]
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 enum CoreContact<R: Real> {
     Apart(Separation<R>),
     Resolved(Option<Penetration<R>>),
@@ -1134,7 +1135,7 @@ enum CoreContact<R: Real> {
 
 /// GJK for the manifold's normal: [`core_proximity`] with the distance
 /// query's witness points, so shapes apart get their separation.
-#[cfg(not(target_os = "none"))]
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
 fn core_contact<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> CoreContact<R>
 where
