@@ -74,7 +74,24 @@ pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R
         let best = first_max(&least);
         return Some(Nearest::Inside { depth: -least[best], normal: unit_normal(best) });
     }
-    let best = first_max(&squared.map(|d| -d));
+    let mut best = first_max(&squared.map(|d| -d));
+    // A corner, where the edge on its other side has the point's foot
+    // inside it and the point beyond its line: that edge's region. Next to
+    // the corner the two squared distances differ by the square of the
+    // foot's offset from it, which rounding hides, while the two normals
+    // differ by its first power.
+    if !(along[best] > R::ZERO && along[best] < R::ONE) {
+        let adjacent = match along[best] > R::ZERO {
+            true if best + 1 >= n => 0,
+            true => best + 1,
+            false if best == 0 => n - 1,
+            false => best - 1,
+        };
+        let inside = along[adjacent % M] > R::ZERO && along[adjacent % M] < R::ONE;
+        if inside && outward[adjacent % M] > R::ZERO {
+            best = adjacent % M;
+        }
+    }
     let t = along[best];
     if t > R::ZERO && t < R::ONE {
         // Across the edge: the signed distance to its line.

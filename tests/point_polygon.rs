@@ -20,7 +20,7 @@ use small_polygon::polygon;
 
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::{Circle, Gjk, Polygon, SupportMap, Transform};
-use gjk2d_oracle::{pair, transform_shape, Shape};
+use gjk2d_oracle::{pair, transform_shape, ExactShape, Shape};
 use proptest::prelude::*;
 
 type Pt = [f64; 2];
@@ -132,3 +132,38 @@ macro_rules! point_polygon_suite {
 
 point_polygon_suite!(point_polygon_matches_the_oracle_f32, f32, Vec2);
 point_polygon_suite!(point_polygon_matches_the_oracle_f64, f64, DVec2);
+
+/// A circle whose centre's foot on an edge lies 1.6e-4 of the edge from a
+/// corner: the squared distances to the edge and to the corner differ by
+/// 2 ulps, and the corner won by rounding, its direction 4e-4 rad off the
+/// edge's normal, the exact one. The depth was right; the normal, and the
+/// contact manifold built on it (a point 3.2e-4 off the polygon), were not
+/// (found by the report's circle_poly family in f32).
+#[test]
+fn centre_beside_a_corner_takes_the_edge_normal() {
+    let pts = [
+        [0.086_000_62f32, 0.200_736_64],
+        [0.308_395_12, -0.014_218_71],
+        [0.651_530_5, 0.305_613_5],
+        [0.832_475_4, 1.079_713_1],
+        [0.748_041_4, 1.747_042_2],
+        [0.535_523_4, 1.966_485_4],
+        [0.196_204_51, 1.680_495],
+        [-0.001_619_453_8, 0.858_419_5],
+    ];
+    let poly = Polygon::<f32, 8>::new(&pts.map(|p| Vec2::new(p[0], p[1]))).unwrap();
+    let circle = Circle::<f32>::at(Vec2::new(0.966_738_7, 0.232_066_78), 0.697_098_4).unwrap();
+    let (gjk, id) = (Gjk::<f32>::new(), Transform::IDENTITY);
+    let edge = Vec2::new(pts[3][0] - pts[2][0], pts[3][1] - pts[2][1]);
+    // From the circle (A) towards the polygon: the edge's inward normal.
+    let inward = Vec2::new(-edge.y, edge.x).normalize();
+    let pen = gjk.penetration(&circle, &id, &poly, &id).expect("overlap");
+    assert!((pen.normal - inward).length() < 1e-6, "{pen:?}, edge normal {inward:?}");
+    let m = gjk.manifold(&circle, &id, &poly, &id, 0.0).unwrap();
+    let exact = ExactShape::from(&Shape::Polygon(pts.iter().map(|p| [p[0] as f64, p[1] as f64]).collect()));
+    for p in m.points() {
+        let on_b = p.point + m.normal * p.separation;
+        let off = pair(&ExactShape::point([on_b.x as f64, on_b.y as f64]), &exact).signed_distance;
+        assert!(off.abs() < 8.0 * f32::EPSILON as f64 * 2.0, "{m:?}: {off:e} off the polygon");
+    }
+}
