@@ -45,6 +45,8 @@ KNOWN_MISSES=(
   "stack budget: f64 cast "
   "stack budget: f64 manifold "
   "stack budget: f32 manifold polygon4-hexagon, overlapping "
+  "stack budget: f32 time of impact "
+  "stack budget: f64 time of impact "
   "flash budget: (3) + EPA penetration "
   "flash budget: (5) every shape and query, f32 "
 )
@@ -236,7 +238,7 @@ while IFS='|' read -r _ precision name _ _ stack _; do
 done < <(grep '^MEASURE|' "$out/measure.txt" | grep -v 'Epa N' || true)
 
 # ---------------------------------------------------------------- flash and panics
-SIZE_BINS="size_0_empty size_1_intersect_const size_1_intersect size_2_distance_const size_2_distance size_3_penetration_const size_3_penetration size_4_raycast_const size_4_raycast size_5_all_f32_const size_5_all_f32 size_5_all_f64_const size_5_all_f64 size_6_cast_const size_7_manifold_const"
+SIZE_BINS="size_0_empty size_1_intersect_const size_1_intersect size_2_distance_const size_2_distance size_3_penetration_const size_3_penetration size_4_raycast_const size_4_raycast size_5_all_f32_const size_5_all_f32 size_5_all_f64_const size_5_all_f64 size_6_cast_const size_7_manifold_const size_8_impact_const size_9_cached_const"
 declare -A TEXT FLASH PANIC
 panic_report="$out/panic-paths.txt"
 : >"$panic_report"
@@ -309,6 +311,8 @@ declare -A LABEL=(
   [size_5_all_f64]="(5) f64, shapes built at run time"
   [size_6_cast_const]="(6) polygon shape cast alone"
   [size_7_manifold_const]="(7) polygon contact manifold alone"
+  [size_8_impact_const]="(8) polygon time of impact alone"
+  [size_9_cached_const]="(9) polygon distance and penetration, warm started"
 )
 kb() { awk -v b="$1" 'BEGIN{printf "%.2f KB", b/1024}'; }
 {

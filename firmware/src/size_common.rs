@@ -8,8 +8,8 @@
 use core::panic::PanicInfo;
 use core::ptr::{addr_of, addr_of_mut, read_volatile, write_volatile};
 use gjk2d::{
-    Capsule, CastOutcome, Circle, Ellipse, Feature, Gjk, HalfEllipse, Motion, Polygon, Ray, RayOutcome, Real,
-    Rectangle, Rounded, Segment, Slice, SupportMap, Transform, Triangle,
+    Capsule, CastOutcome, Circle, Ellipse, Feature, Gjk, HalfEllipse, ImpactConfig, ImpactOutcome, Motion, PairCache,
+    Polygon, Ray, RayOutcome, Real, Rectangle, Rounded, Segment, Slice, SupportMap, Sweep, Transform, Triangle,
 };
 
 /// The runtime's entry attribute: the same firmwares build for Cortex-M and
@@ -261,6 +261,63 @@ pub fn manifold<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
             sink_u32(feature(p.id.a) | feature(p.id.b) << 16);
         }
         sink_u32(m.iterations | (m.status as u32) << 16);
+    }
+}
+
+/// B moving by the ray's direction (inputs 22 and 23) and turning by
+/// input 24 about its origin, against A still: the time of impact, its
+/// target and tolerance inputs 25 and 26.
+pub fn impact<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    let origin = R::vector(R::ZERO, R::ZERO);
+    let (Ok(sweep), Ok(config)) =
+        (Sweep::new(tb, origin, vec::<R>(22), R::input(24)), ImpactConfig::new(R::input(25), R::input(26)))
+    else {
+        return;
+    };
+    let toi = gjk.time_of_impact(a, &Sweep::still(&Transform::IDENTITY), b, &sweep, &config);
+    match toi.outcome {
+        ImpactOutcome::Hit(h) => {
+            h.time.sink();
+            h.separation.sink();
+            sink_v::<R>(h.normal);
+            sink_v::<R>(h.point_a);
+            sink_v::<R>(h.point_b);
+            sink_u32(feature(h.features.a) | feature(h.features.b) << 16);
+        }
+        ImpactOutcome::Start(s) => {
+            s.separation.sink();
+            sink_v::<R>(s.normal);
+        }
+        ImpactOutcome::Miss => sink_u32(1),
+    }
+    sink_u32(toi.iterations | (toi.status as u32) << 16);
+}
+
+/// Distance and penetration warm started, two steps of the same pair (B
+/// moved by input 22 between them), the cache kept between them.
+pub fn cached<R: Io, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
+    gjk: &Gjk<R>,
+    a: &A,
+    b: &B,
+    tb: &Transform<R>,
+) {
+    let mut cache = PairCache::default();
+    let (x, y) = R::components(tb.translation());
+    let moved = Transform::new(R::vector(x + R::input(22), y + R::input(23)), R::input(24));
+    for t in [Ok(*tb), moved].into_iter().flatten() {
+        if let Some(s) = gjk.distance_cached(a, &Transform::IDENTITY, b, &t, &mut cache) {
+            s.distance.sink();
+            sink_v::<R>(s.normal);
+        }
+        if let Some(p) = gjk.penetration_cached(a, &Transform::IDENTITY, b, &t, &mut cache) {
+            p.depth.sink();
+            sink_v::<R>(p.normal);
+        }
     }
 }
 

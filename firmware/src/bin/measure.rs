@@ -11,7 +11,7 @@ use gjk2d::{Capsule, Ellipse, Gjk, Polygon, Real, Transform};
 #[cfg(not(feature = "measure-step"))]
 use gjk2d::{Circle, Epa, GjkConfig, Ray};
 #[cfg(feature = "measure-step")]
-use gjk2d::{Manifold, Motion, ShapeCast};
+use gjk2d::{ImpactConfig, Manifold, Motion, PairCache, ShapeCast, Sweep};
 use gjk2d_firmware::{debug, entry, hprintln, meter};
 #[cfg(target_arch = "arm")]
 use panic_semihosting as _;
@@ -188,6 +188,29 @@ fn suite<R: Real>(ctx: &Ctx, p: &str) -> Option<()> {
             let _ = bb(gjk.manifold(bb(&a), bb(&ta), bb(&b), bb(&over), bb(margin)));
         },
     );
+    // B moving towards A and turning a quarter turn, A still.
+    let config = ImpactConfig::<R>::new(R::from_f64(0.01), R::from_f64(0.005)).ok()?;
+    let turning = Sweep::new(&apart, v::<R>(0.0, 0.0), v::<R>(-1.6, -0.4), R::from_f64(1.5)).ok()?;
+    let still = Sweep::still(&ta);
+    let toi = gjk.time_of_impact(&a, &still, &b, &turning, &config);
+    report(ctx, p, "time of impact polygon4-hexagon", toi.iterations, &|| {
+        bb(gjk.time_of_impact(bb(&a), bb(&still), bb(&b), bb(&turning), bb(&config)));
+    });
+    // A cache from the step before, B moved a little since.
+    let (mut cache, near) =
+        (PairCache::<R>::default(), Transform::<R>::new(v::<R>(2.21, 0.7), R::from_f64(0.31)).ok()?);
+    let _ = gjk.distance_cached(&a, &ta, &b, &apart, &mut cache);
+    let warm = gjk.distance_cached(&a, &ta, &b, &near, &mut cache.clone()).map_or(0, |s| s.iterations);
+    report(ctx, p, "distance cached polygon4-hexagon", warm, &|| {
+        bb(gjk.distance_cached(bb(&a), bb(&ta), bb(&b), bb(&near), &mut bb(cache)));
+    });
+    let (mut cache, deeper) =
+        (PairCache::<R>::default(), Transform::<R>::new(v::<R>(1.31, 0.6), R::from_f64(0.31)).ok()?);
+    let _ = gjk.penetration_cached(&a, &ta, &b, &over, &mut cache);
+    let warm = gjk.penetration_cached(&a, &ta, &b, &deeper, &mut cache.clone()).map_or(0, |p| p.iterations);
+    report(ctx, p, "penetration cached polygon4-hexagon", warm, &|| {
+        bb(gjk.penetration_cached(bb(&a), bb(&ta), bb(&b), bb(&deeper), &mut bb(cache)));
+    });
     Some(())
 }
 
