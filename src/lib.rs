@@ -106,3 +106,8 @@ pub use batch::EpaVec;
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+/// The examples page's examples, compiled and run as doctests.
+#[doc = include_str!("../docs/examples.md")]
+#[cfg(doctest)]
+pub struct ExamplesDoctests;

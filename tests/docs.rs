@@ -8,7 +8,8 @@
 
 use std::path::Path;
 
-const PAGES: [&str; 5] = ["README.md", "docs/accuracy.md", "docs/speed.md", "firmware/README.md", "web/README.md"];
+const PAGES: [&str; 6] =
+    ["README.md", "docs/examples.md", "docs/accuracy.md", "docs/speed.md", "firmware/README.md", "web/README.md"];
 
 fn read(path: &str) -> String {
     let full = Path::new(env!("CARGO_MANIFEST_DIR")).join(path);
