@@ -209,8 +209,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     simplex: &[SupportPoint<R>],
 ) -> PenetrationEstimate<R> {
     let curved = !difference.is_polytope();
-    // A closure, inlined where it is called: an out-of-line function would
-    // add a frame under EPA's, where the query's stack peaks.
+    // A closure, so no frame of its own is added where the stack peaks.
     let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
@@ -219,7 +218,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     // only touches the origin (a point, or an edge through it) has no
     // interior yet: the loop below widens it with supports along its edges'
     // normals, as it widens any polytope, so the seed needs no support call
-    // (and no inlined copy of one) of its own.
+    // of its own.
     // A point that repeats one already in is left out: an edge needs two.
     polytope.clear_all();
     let ccw = match simplex {
@@ -375,7 +374,7 @@ fn finish_curved<R: Real, S: Storage<R>>(
     iterations += 1;
     let (mut a, mut g0, mut b, mut g1) = (normal, slope_here, normal, slope_here);
     let steps = n.min(8);
-    // One loop for either way: each copy held an inlined support call.
+    // One loop for either way, so the support call appears once.
     let forward = slope_here <= R::ZERO;
     for k in 1..=steps {
         // k <= steps <= n: going back k edges is going forward n - k.

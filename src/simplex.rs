@@ -341,8 +341,7 @@ fn triangle_edge_body<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFo
     // The origin is on the inner side of edge i->j when cross(wi, wj)
     // has the sign of the area (zero counts as inside: touching).
     let sides = [wa.cross(wb), wb.cross(wc), wc.cross(wa)];
-    // Each side's verdict once, not in a closure inlined twice (the
-    // enclosure test and the edge loop): one copy of the code.
+    // Each side's verdict once, for both the enclosure test and the edge loop.
     let outside = sides.map(|side| {
         if area > R::ZERO {
             side < R::ZERO
