@@ -327,10 +327,9 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        // On bare metal and wasm the two queries in turn, each in a frame
-        // of its own: GJK twice for overlapping shapes, but the stack peaks
-        // at the larger query (one frame holding both paths peaks higher),
-        // and no third copy of GJK's loop is linked.
+        // Bare metal and wasm ask the two queries in turn, each in its own
+        // frame: one frame for both paths peaks higher, and a third GJK loop
+        // would grow the module.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         return nearest(in_own_frame(|| self.distance(a, ta, b, tb)), || {
             in_own_frame(|| self.penetration(a, ta, b, tb))
@@ -782,8 +781,8 @@ fn nearest<R: Real>(
     penetration: impl FnOnce() -> Option<Penetration<R>>,
 ) -> Option<Nearest<R>> {
     match separation {
-        Some(s) => Some((s.normal, s.distance, s.iterations, s.status)),
-        None => penetration().map(|p| (p.normal, -p.depth, p.iterations, p.status)),
+        Some(s) => Some(apart(s)),
+        None => penetration().map(overlapping),
     }
 }
 
@@ -1112,13 +1111,13 @@ where
 }
 
 /// The manifold's start from shapes apart.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
 fn apart<R: Real>(s: Separation<R>) -> Nearest<R> {
     (s.normal, s.distance, s.iterations, s.status)
 }
 
 /// The manifold's start from shapes that overlap (or touch).
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
 fn overlapping<R: Real>(p: Penetration<R>) -> Nearest<R> {
     (p.normal, -p.depth, p.iterations, p.status)
 }

@@ -69,7 +69,7 @@ fn repeats(ids: &[u32; 3], id: u32) -> bool {
 }
 
 impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, A, B> {
-    /// Distance between the cores (radii not included): [`distance_loop`],
+    /// Distance between the cores (radii not included): [`distance_loop_from`],
     /// inlined into each query where the scalar asks for flat frames
     /// (`FLAT_GJK`, in `real.rs`), elsewhere one copy that distance and
     /// penetration share.
@@ -81,7 +81,7 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
         epsilon: R,
     ) -> CoreProximity<'s, R, P> {
         if R::FLAT_GJK {
-            distance_loop(self, slot, max_iterations, epsilon)
+            distance_loop_from(self, slot, None, max_iterations, epsilon)
         } else {
             self.shared_core_distance(slot, max_iterations, epsilon)
         }
@@ -94,34 +94,15 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
         max_iterations: u32,
         epsilon: R,
     ) -> CoreProximity<'s, R, P> {
-        distance_loop(self, slot, max_iterations, epsilon)
+        distance_loop_from(self, slot, None, max_iterations, epsilon)
     }
 }
 
-/// GJK's distance loop: see [`Pair::core_distance`].
-///
-/// The simplex lives in the caller's `slot` (pass `None`), started here and
-/// reduced in place, so it is never copied (a `memcpy` on bare metal) and
-/// both queries share one copy of its start.
-#[inline(always)]
-fn distance_loop<'s, R, A, B, P>(
-    pair: &Pair<'_, R, A, B>,
-    slot: &'s mut Option<Simplex<R, P>>,
-    max_iterations: u32,
-    epsilon: R,
-) -> CoreProximity<'s, R, P>
-where
-    R: Real,
-    P: Payload<R>,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    distance_loop_from(pair, slot, None, max_iterations, epsilon)
-}
-
-/// GJK's distance loop from a simplex of the caller's, if given (a warm
-/// start: the last step's simplex, its points measured again), else from
-/// the first support. Any points of the Minkowski difference will do: the
+/// GJK's distance loop ([`Pair::core_distance`]) from a simplex of the
+/// caller's, if given (a warm start: the last step's simplex, its points
+/// measured again), else from the first support. The simplex lives in the
+/// caller's `slot` (pass `None`), started here and reduced in place, so it
+/// is never copied (a `memcpy` on bare metal). Any points of the Minkowski difference will do: the
 /// loop ends on the same criteria, so its answers keep their guarantees
 /// however it starts.
 #[inline(always)]
@@ -151,13 +132,12 @@ where
     let curved = !(Pair::<R, A, B>::shapes_known() && MinkowskiDifference::is_polytope(pair));
     let mut previous = R::INFINITY;
     let mut iterations = 1;
-    // One exit for both ways of ending apart (one copy of the result).
+    // One exit for both ways of ending apart, so the result is built once.
     let (v, status) = loop {
         // Ids before the reduction: a vertex dropped now and found again next
         // is a repeat too (Box2D compares with the saved vertices likewise).
         let before = simplex.ids();
-        // Enclosed, or on the simplex: overlapping (one exit, one copy of
-        // the conversion).
+        // Enclosed, or on the simplex: overlapping, by the same exit.
         let (v, vv) = match simplex.solve() {
             Closest::Point(v) => (v, v.length_squared()),
             Closest::Enclosed => (V2::zero(), R::ZERO),
@@ -220,7 +200,7 @@ where
     separated(simplex, v, lower_bound, iterations, status)
 }
 
-/// The simplex of the first support point, for [`distance_loop`]. Inlined,
+/// The simplex of the first support point, for [`distance_loop_from`]. Inlined,
 /// so it is built where it stays; an empty simplex to fill instead has its
 /// slots cleared (a call to `memclr`).
 #[inline(always)]
@@ -267,8 +247,7 @@ where
     let reach2 = reach * reach;
     // The gap tolerance, for curved cores only (computed on first use).
     let mut tolerance = None;
-    // One support call, at the top of the loop, for the first point too,
-    // not a second inlined copy of it for the start.
+    // One support call, at the top of the loop, serves the first point too.
     let mut simplex: Simplex<R, ()> = Simplex::empty();
     let mut direction = pair.first_direction;
     let (mut v, mut vv) = (V2::zero(), R::ZERO);
