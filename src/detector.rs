@@ -12,11 +12,12 @@ use crate::error::Error;
 use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::impact::{advance, Sweep, TimeOfImpact};
 use crate::minkowski::Pair;
+use crate::point_cores::PointCores;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, FeatureId, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
 use crate::shape::SupportMap;
-use crate::simplex::{Payload, Simplex, Vertex, Witness};
+use crate::simplex::{Payload, Simplex, Witness};
 use crate::transform::Transform;
 use crate::warm::PairCache;
 
@@ -76,7 +77,7 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         if pair.point_cores() {
-            return point_cores_overlap(pair, self.config.detect_epsilon());
+            return crate::point_cores::overlap_test(pair, self.config.detect_epsilon());
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO {
@@ -141,7 +142,7 @@ impl<R: Real, P> Gjk<R, P> {
                 if core.certainly_within(pair.radius_a() + pair.radius_b()) {
                     return None;
                 }
-                return separation(pair, &core.separation());
+                return core.separation(pair);
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -193,7 +194,7 @@ impl<R: Real, P> Gjk<R, P> {
     {
         if pair.point_cores() {
             if let Some(ref core) = PointCores::new(pair) {
-                return rounded_overlap(pair, &core.separation());
+                return core.penetration(pair);
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -350,11 +351,11 @@ impl<R: Real, P> Gjk<R, P> {
         if pair.point_cores() {
             if let Some(ref core) = PointCores::new(&pair) {
                 if !core.certainly_within(pair.radius_a() + pair.radius_b()) {
-                    if let Some(s) = separation(&pair, &core.separation()) {
+                    if let Some(s) = core.separation(&pair) {
                         return Some(apart(s));
                     }
                 }
-                return rounded_overlap(&pair, &core.separation()).map(overlapping);
+                return core.penetration(&pair).map(overlapping);
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -969,70 +970,6 @@ where
         iterations: 1,
         status: Status::Converged,
     })
-}
-
-/// The intersection test of two point cores: GJK's verdict, iteration count
-/// and status (its first support is the centers' offset, and its second
-/// repeats it), without its loop.
-fn point_cores_overlap<R, A, B>(pair: &Pair<'_, R, A, B>, detect_epsilon: R) -> Detection
-where
-    R: Real,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    let margin = if detect_epsilon == R::ZERO { R::ZERO } else { detect_epsilon * pair.scale() };
-    let reach = pair.radius() + margin;
-    let intersecting = pair.centers.length_squared() <= reach * reach;
-    Detection { intersecting, iterations: if intersecting { 1 } else { 2 }, status: Status::Converged }
-}
-
-/// What GJK's distance loop ends with on two point cores that are apart: the
-/// one-vertex simplex of their offset, found twice (two iterations, the
-/// repeat converges). Built here, its closest point, bounds and witness
-/// points are the loop's to the bit, and the queries finish as they do after
-/// the loop. `None` for coincident cores, which the loop calls overlapping.
-struct PointCores<R: Real> {
-    simplex: Simplex<R, Witness<R>>,
-    v: V2<R>,
-    lower_bound: R,
-}
-
-impl<R: Real> PointCores<R> {
-    fn new<A, B>(pair: &Pair<'_, R, A, B>) -> Option<Self>
-    where
-        A: SupportMap<R> + ?Sized,
-        B: SupportMap<R> + ?Sized,
-    {
-        let w = pair.support(pair.first_direction);
-        let vv = w.w.length_squared();
-        if vv == R::ZERO {
-            return None;
-        }
-        let lower_bound = R::ZERO.max(w.w.dot(w.w) / vv.sqrt());
-        Some(Self { simplex: Simplex::new(Vertex::from_minkowski(&w)), v: w.w, lower_bound })
-    }
-
-    /// Whether the cores are certainly within `radius` (the radii's sum)
-    /// of each other, decided on the squared offset with a margin of 16 eps:
-    /// where it says so, the distance query's answer is `None` as well. Its
-    /// branch is as unpredictable as the shapes' overlap, but no longer
-    /// waits for a square root to learn which way it goes.
-    #[inline(always)]
-    fn certainly_within(&self, radius: R) -> bool {
-        let vv = self.v.length_squared();
-        // Normal numbers only: then the square and the limit round relatively.
-        vv >= R::MIN_POSITIVE && vv < radius * radius * (R::ONE - R::from_u32(16) * R::EPSILON)
-    }
-
-    fn separation(&self) -> CoreSeparation<'_, R, Witness<R>> {
-        CoreSeparation {
-            simplex: &self.simplex,
-            v: self.v,
-            lower_bound: self.lower_bound,
-            iterations: 2,
-            status: Status::Converged,
-        }
-    }
 }
 
 /// What the penetration query's GJK leaves for the solver: the simplex

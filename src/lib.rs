@@ -60,6 +60,7 @@ mod hw_sqrt;
 mod impact;
 mod manifold;
 mod minkowski;
+mod point_cores;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 mod point_polygon;
 mod polytope;
