@@ -739,7 +739,7 @@ fn main() {
     if wanted("circle_circle") {
         pair_family::<8>("circle_circle", &pairs(10, CASES, &circle, &circle), &PAIR_QUERIES, passes, &mut rows);
     }
-    // Manifolds of 8-gons, and of a circle or a capsule on an 8-gon.
+    // Manifolds of 8-gons, of a circle or a capsule on an 8-gon, and of 64-gons.
     let manifold = [(Query::Manifold, "manifold")];
     let on_p8: [(&str, u64, &Maker); 3] =
         [("manifold_poly8", 12, &p8), ("manifold_circle_poly8", 13, &circle), ("manifold_capsule_poly8", 14, &capsule)];
@@ -747,6 +747,9 @@ fn main() {
         if wanted(name) {
             pair_family::<8>(name, &pairs(seed, CASES, a, &p8), &manifold, passes, &mut rows);
         }
+    }
+    if wanted("manifold_poly64") {
+        pair_family::<64>("manifold_poly64", &pairs(15, CASES, &p64, &p64), &manifold, passes, &mut rows);
     }
     if wanted("ray_poly8") {
         ray_family::<8>("ray_poly8", &rays(6, CASES, &p8), passes, &mut rows);

@@ -24,8 +24,6 @@
 //! All in the pair frame (A's frame, relative to its reference point), as
 //! every query works: shapes far from the origin keep their precision.
 
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-use crate::minkowski::Corners;
 use crate::minkowski::Pair;
 use crate::real::{Real, V2};
 use crate::result::{ContactPoint, Feature, FeatureId, Manifold};
@@ -239,8 +237,7 @@ fn neighbour<R: Real>(
 /// or the last of a run of them on one line (within `4 eps` of its length,
 /// as [`along_line`] takes them), so that the face is the whole edge.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-fn lent_face<R: Real>(corners: &Corners<R>, id: u32, ccw: bool) -> Option<Face<R>> {
-    let n = corners.len;
+fn lent_face<R: Real>(n: usize, at: impl Fn(usize) -> V2<R>, id: u32, ccw: bool) -> Option<Face<R>> {
     let i = id as usize;
     if i >= n || n < 2 {
         return None;
@@ -258,7 +255,6 @@ fn lent_face<R: Real>(corners: &Corners<R>, id: u32, ccw: bool) -> Option<Face<R
             k - 1
         }
     };
-    let at = |k: usize| corners.v.get(k).copied().unwrap_or_default();
     let v = at(i);
     let mut j = step(i);
     for _ in 0..n {
@@ -394,8 +390,8 @@ where
     let (corners_a, corners_b) = (pair.corners_a(), pair.corners_b());
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     let (lent_a, lent_b) = (
-        |id: u32, ccw: bool| corners_a.as_ref().map(|c| lent_face(c, id, ccw)),
-        |id: u32, ccw: bool| corners_b.as_ref().map(|c| lent_face(c, id, ccw)),
+        |id: u32, ccw: bool| corners_a.as_ref().map(|c| lent_face(c.len(), |k| c.at(k), id, ccw)),
+        |id: u32, ccw: bool| corners_b.as_ref().map(|c| lent_face(c.len(), |k| pair.b_to_pair(c.at(k)), id, ccw)),
     );
     #[cfg(any(target_os = "none", target_family = "wasm"))]
     let (lent_a, lent_b) = (|_: u32, _: bool| None, |_: u32, _: bool| None);

@@ -257,23 +257,24 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some((b.segment_core()?, a.small_polygon()?.vertices, false))
     }
 
-    /// A's core vertices in the pair frame, where A lends them (a small
-    /// polygon, a segment core) and both types are known when the program
-    /// is compiled: a contact manifold then finds a support vertex's edges
+    /// A's core vertices (in the pair frame, which is A's), where A lends
+    /// them (a polygon of any size, a segment core) and both types are
+    /// known when the program is compiled: a contact manifold then finds a support vertex's edges
     /// by index instead of by asking the support function around it.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    pub fn corners_a(&self) -> Option<Corners<R>> {
+    pub fn corners_a(&self) -> Option<Corners<'s, R>> {
         let a: &'s A = self.a;
-        Self::shapes_known().then(|| Corners::lent(a, |p| p)).flatten()
+        Self::shapes_known().then(|| Corners::lent(a)).flatten()
     }
 
-    /// B's, as [`corners_a`](Self::corners_a) gives A's.
+    /// B's, as [`corners_a`](Self::corners_a) gives A's, in B's frame:
+    /// [`b_to_pair`](Self::b_to_pair) places them.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    pub fn corners_b(&self) -> Option<Corners<R>> {
+    pub fn corners_b(&self) -> Option<Corners<'s, R>> {
         let b: &'s B = self.b;
-        Self::shapes_known().then(|| Corners::lent(b, |p| self.b_to_pair(p))).flatten()
+        Self::shapes_known().then(|| Corners::lent(b)).flatten()
     }
 
     /// A point core (a circle's centre) and a small polygon, where both
@@ -378,26 +379,40 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     }
 }
 
-/// A polytope core's vertices (at most [`SMALL_POLYGON_MAX`]) placed in the
-/// pair frame, counter-clockwise, indexed by their support ids.
+/// A polytope core's vertices as the shape lends them (a polygon's, a
+/// segment core's), counter-clockwise, indexed by their support ids, in
+/// the shape's own frame: a manifold reads two or three of them, so they
+/// are placed as read, not copied and placed all at once.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[derive(Clone, Copy)]
-pub(crate) struct Corners<R> {
-    pub v: [V2<R>; crate::polytope::SMALL_POLYGON_MAX],
-    pub len: usize,
+pub(crate) enum Corners<'s, R> {
+    Polygon(&'s [V2<R>]),
+    Segment([V2<R>; 2]),
 }
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-impl<R: Real> Corners<R> {
-    fn lent<S: SupportMap<R> + ?Sized>(shape: &S, place: impl Fn(V2<R>) -> V2<R>) -> Option<Self> {
-        const M: usize = crate::polytope::SMALL_POLYGON_MAX;
-        let segment = shape.segment_core();
-        let vertices: &[V2<R>] = match (&segment, shape.small_polygon()) {
-            (Some(ends), _) => ends,
-            (None, Some(polygon)) => polygon.vertices,
-            (None, None) => return None,
-        };
-        let len = vertices.len().min(M);
-        Some(Self { v: core::array::from_fn(|i| vertices.get(i).map_or(V2::zero(), |&p| place(p))), len })
+impl<'s, R: Real> Corners<'s, R> {
+    fn lent<S: SupportMap<R> + ?Sized>(shape: &'s S) -> Option<Self> {
+        if let Some(ends) = shape.segment_core() {
+            return Some(Self::Segment(ends));
+        }
+        Some(Self::Polygon(shape.polygon_core()?.vertices))
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Self::Polygon(v) => v.len(),
+            Self::Segment(_) => 2,
+        }
+    }
+
+    /// Vertex `k` in the shape's frame (zero past the end).
+    pub fn at(&self, k: usize) -> V2<R> {
+        match self {
+            Self::Polygon(v) => v.get(k),
+            Self::Segment(v) => v.get(k),
+        }
+        .copied()
+        .unwrap_or_default()
     }
 }

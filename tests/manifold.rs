@@ -135,7 +135,11 @@ macro_rules! manifold_suite {
                 Some(match g {
                     Geo::Poly(pts) => {
                         let pts: Vec<$vec> = pts.iter().map(|&p| v(p)).collect();
-                        Box::new(Polygon::<R, 16>::new(&pts).ok()?)
+                        if pts.len() > 16 {
+                            Box::new(Polygon::<R, 64>::new(&pts).ok()?)
+                        } else {
+                            Box::new(Polygon::<R, 16>::new(&pts).ok()?)
+                        }
                     }
                     Geo::Circle(c, r) => Box::new(Circle::at(v(*c), *r as R).ok()?),
                     Geo::Capsule(a, b, r) => Box::new(Capsule::new(v(*a), v(*b), *r as R).ok()?),
@@ -334,6 +338,55 @@ macro_rules! manifold_suite {
                     let id = Transform::IDENTITY;
                     let m = Gjk::<R>::new().manifold(&pa, &id, &pb, &id, margin as R).unwrap();
                     check_manifold(&m, &a, &b, margin, "typed polygons")?;
+                }
+
+                /// Polygons of 9 to 64 vertices of known types, half of them
+                /// boxes with up to four vertices on each side: the manifold
+                /// finds a support vertex's edges by index (the polygon lends
+                /// its vertices), not by asking the support function around.
+                #[test]
+                fn dense_polygons_by_type_match_the_oracle(seed in any::<u64>()) {
+                    let mut rng = Rng(seed);
+                    let dense = |rng: &mut Rng, c: Pt, size: f64| -> Vec<Pt> {
+                        let (a, b, phi) = (rng.range(0.2, 1.0) * size, rng.range(0.3, 1.0) * size, rng.range(0.0, TAU));
+                        let (cp, sp) = (phi.cos(), phi.sin());
+                        let place = |x: f64, y: f64| rp([c[0] + cp * x - sp * y, c[1] + sp * x + cp * y]);
+                        if rng.next() % 2 == 0 {
+                            // An axis-aligned box (so that its split sides
+                            // stay exactly straight in f32), each side split
+                            // at random fractions.
+                            let (x0, x1, y0, y1) = (r32(c[0] - a), r32(c[0] + a), r32(c[1] - b), r32(c[1] + b));
+                            let corners = [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
+                            let mut p = Vec::new();
+                            for k in 0..4 {
+                                let (s, e) = (corners[k], corners[(k + 1) % 4]);
+                                let mut f: Vec<f64> = (0..1 + rng.next() % 4).map(|_| rng.range(0.1, 0.9)).collect();
+                                f.sort_by(|x, y| x.partial_cmp(y).unwrap());
+                                p.push(s);
+                                p.extend(f.iter().map(|&t| rp([s[0] + (e[0] - s[0]) * t, s[1] + (e[1] - s[1]) * t])));
+                            }
+                            p
+                        } else {
+                            let count = 9 + (rng.next() % 56) as usize;
+                            let phase = rng.unit();
+                            (0..count).map(|i| {
+                                let th = (i as f64 + phase + 0.3 * rng.unit()) / count as f64 * TAU;
+                                place(a * th.cos(), b * th.sin())
+                            }).collect()
+                        }
+                    };
+                    let (sa, sb) = (rng.range(0.3, 3.0), rng.range(0.3, 3.0));
+                    let angle = rng.range(0.0, TAU);
+                    let reach = rng.range(0.3, 1.3) * (sa + sb);
+                    let va = dense(&mut rng, [0.0, 0.0], sa);
+                    let vb = dense(&mut rng, [reach * angle.cos(), reach * angle.sin()], sb);
+                    let to = |p: &Vec<Pt>| p.iter().map(|&q| v(q)).collect::<Vec<$vec>>();
+                    let (Ok(pa), Ok(pb)) = (Polygon::<R, 64>::new(&to(&va)), Polygon::<R, 64>::new(&to(&vb))) else { return Ok(()) };
+                    let (Some(a), Some(b)) = (Placed::world(&Geo::Poly(va)), Placed::world(&Geo::Poly(vb))) else { return Ok(()) };
+                    let margin = r32(rng.range(0.0, 0.5));
+                    let id = Transform::IDENTITY;
+                    let m = Gjk::<R>::new().manifold(&pa, &id, &pb, &id, margin as R).unwrap();
+                    check_manifold(&m, &a, &b, margin, "typed dense polygons")?;
                 }
 
                 /// A box, a capsule or a trapezoid resting on a wider box, the

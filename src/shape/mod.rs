@@ -173,6 +173,17 @@ pub trait SupportMap<R: Real> {
         None
     }
 
+    /// The vertices of a polygon core of any size, counter-clockwise,
+    /// relative to the reference point and indexed by their support ids: a
+    /// contact manifold finds a support vertex's edges by index instead of
+    /// asking the support function around it. Hosts only, as
+    /// [`small_polygon`](Self::small_polygon).
+    #[doc(hidden)]
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn polygon_core(&self) -> Option<SmallPolygon<'_, R>> {
+        None
+    }
+
     /// The end points of a segment core (a segment's, a capsule's),
     /// relative to the reference point: against a small polygon, its two
     /// normals and the polygon's are all the separating axes there are, so
@@ -185,9 +196,9 @@ pub trait SupportMap<R: Real> {
     }
 }
 
-/// A polygon core of at most [`SMALL_POLYGON_MAX`] vertices, as
-/// [`SupportMap::small_polygon`] lends it: counter-clockwise, relative to
-/// the reference point.
+/// A polygon core's vertices, as [`SupportMap::small_polygon`] (at most
+/// [`SMALL_POLYGON_MAX`]) and [`SupportMap::polygon_core`] (any number)
+/// lend them: counter-clockwise, relative to the reference point.
 #[doc(hidden)]
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[derive(Clone, Copy, Debug)]
@@ -223,6 +234,10 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn small_polygon(&self) -> Option<SmallPolygon<'_, R>> {
         (**self).small_polygon()
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn polygon_core(&self) -> Option<SmallPolygon<'_, R>> {
+        (**self).polygon_core()
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn segment_core(&self) -> Option<[V2<R>; 2]> {

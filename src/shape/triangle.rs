@@ -48,6 +48,10 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn small_polygon(&self) -> Option<super::SmallPolygon<'_, R>> {
         self.0.small_polygon()
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
+        self.0.polygon_core()
+    }
     fn is_polytope(&self) -> bool {
         true
     }
