@@ -176,6 +176,7 @@ where
         // One core point on both sides (circles' cores, a vertex's disk):
         // the boundary between them is that point's disk.
         if l.id == r.id && l.id != NO_ID {
+            gap = R::ZERO;
             break Status::Converged;
         }
         let Some(n) = (l.w - r.w).perp().try_normalize() else {
@@ -197,10 +198,13 @@ where
             if gap <= epsilon * scale {
                 break Status::Converged;
             }
-        } else if s.id == l.id || s.id == r.id {
+        } else if (s.id == l.id || s.id == r.id) && l.id != NO_ID && r.id != NO_ID {
             // Polytope cores: the chord's core points are one feature when
             // the support along their own normal is one of them (a face of
             // the cores' difference); else that support lies between them.
+            // Not where one end is a curve point (a half-ellipse's dome
+            // beside its corner): that chord is no face, and the support,
+            // a point of the vertex's disk, brackets the ray as any does.
             let core_normal = (l.core - r.core).perp();
             if radius == R::ZERO || core_normal.max_abs() == R::ZERO {
                 gap = R::ZERO;

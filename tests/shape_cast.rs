@@ -566,8 +566,9 @@ macro_rules! cast_suite {
                 }
             }
 
-            /// Curved shapes (an ellipse against every kind, and two
-            /// ellipses): within the configured epsilon, as `tests/curved.rs`
+            /// Curved shapes (an ellipse, a half-ellipse or a slice against
+            /// every kind, and against an ellipse): within the configured
+            /// epsilon, as `tests/curved.rs`
             /// judges them, by the certified branch-and-bound oracle: at the
             /// reported contact the shapes touch, and no contact is missed at
             /// 64 fractions of the motion.
@@ -577,9 +578,21 @@ macro_rules! cast_suite {
                 let mut rng = Rng(11);
                 let eps_cfg = GjkConfig::<R>::default().raycast_epsilon() as f64;
                 let (mut worst, mut most) = (0.0f64, 0);
-                for i in 0..cases(300) {
+                for i in 0..cases(600) {
                     let (w, h) = (r32(rng.range(0.2, 2.0)), r32(rng.range(0.02, 2.0)));
-                    let ellipse = Ellipse::<R>::new(w as R, h as R).unwrap();
+                    // A: an ellipse, a half-ellipse or a slice (of 1e-3 rad to pi).
+                    let (curved, local_a, reach_a): (Box<dyn SupportMap<R>>, Local, f64) = match (i / 4) % 3 {
+                        0 => (Box::new(Ellipse::<R>::new(w as R, h as R).unwrap()), Local::Ellipse { a: w / 2.0, b: h / 2.0 }, w.max(h) / 2.0),
+                        1 => (Box::new(HalfEllipse::<R>::new(w as R, h as R).unwrap()), Local::HalfEllipse { a: w / 2.0, h }, (w / 2.0).max(h)),
+                        _ => {
+                            let theta = r32(rng.range(-3.0, 0.0).exp().min(1.0) * std::f64::consts::PI);
+                            let slice = Slice::<R>::new(w as R, theta as R).unwrap();
+                            // The end gjk2d computed: its support straight up
+                            // (the slice spans at most pi, so that is an end).
+                            let end = pt(slice.support(v([0.0, 1.0])));
+                            (Box::new(slice), Local::Slice { radius: w, end }, w)
+                        }
+                    };
                     let ta = Transform::new(v([r32(rng.range(-2.0, 2.0)), r32(rng.range(-2.0, 2.0))]), rng.range(-4.0, 4.0) as R).unwrap();
                     let (geo, local): (Box<dyn SupportMap<R>>, Local) = match i % 4 {
                         0 => {
@@ -607,14 +620,14 @@ macro_rules! cast_suite {
                     let side = rng.range(-2.5, 2.5);
                     let start = pt(tb.translation());
                     let m = pt(v([(from[0] - heading.sin() * side - start[0]) * 1.2, (from[1] + heading.cos() * side - start[1]) * 1.2]));
-                    let c = Gjk::<R>::new().cast(&ellipse, &ta, &*geo, &tb, &Motion::new(v(m)).unwrap());
-                    let pa = Curved::new(Local::Ellipse { a: w / 2.0, b: h / 2.0 }, ta.cos() as f64, ta.sin() as f64, from);
+                    let c = Gjk::<R>::new().cast(&*curved, &ta, &*geo, &tb, &Motion::new(v(m)).unwrap());
+                    let pa = Curved::new(local_a.clone(), ta.cos() as f64, ta.sin() as f64, from);
                     let at_fraction = |f: f64| Curved::new(local.clone(), tb.cos() as f64, tb.sin() as f64, [start[0] + m[0] * f, start[1] + m[1] * f]);
                     let reach = pa.reach() + at_fraction(1.0).reach();
-                    let l = (w.max(h) / 2.0).max(geo.bounding_radius() as f64);
+                    let l = reach_a.max(geo.bounding_radius() as f64);
                     let tol = 2.0 * eps_cfg * l + 8.0 * EPS * (l + norm(m) + reach);
                     let signed = |f: f64| curved_pair(&pa, &at_fraction(f), 1e-15 * reach);
-                    let ctx = || format!("ellipse {w}x{h} at {ta:?}, B {local:?} at {tb:?} moving {m:?}: {c:?}");
+                    let ctx = || format!("{local_a:?} at {ta:?}, B {local:?} at {tb:?} moving {m:?}: {c:?}");
                     assert!(c.status.is_converged(), "{}", ctx());
                     if !matches!(c.outcome, CastOutcome::Start(_)) {
                         most = most.max(c.iterations);
@@ -765,3 +778,59 @@ macro_rules! cast_suite {
 
 cast_suite!(single, f32, Vec2);
 cast_suite!(double, f64, DVec2);
+
+/// A chord from a curve point to a vertex is no face of the cores'
+/// difference, though the support along its normal is that vertex: a circle
+/// cast at a half-ellipse's dome beside its corner (the cast stopped 0.036
+/// past the first contact), and at a slice's arc beside its end (it ran to
+/// its iteration limit). Judged by the certified curved oracle: at the
+/// reported fraction the shapes touch.
+#[test]
+fn curve_point_beside_a_vertex_is_no_face() {
+    use gjk2d_oracle::curved::{curved_pair, Local, Placed as Curved};
+    let half = HalfEllipse::<f64>::new(2.0 * 0.5622016191482544, 1.4074671268463135).unwrap();
+    let slice = Slice::<f64>::new(0.9364948868751526, 2.0 * 0.15194948764435703f64.atan2(0.9240855081365157)).unwrap();
+    let end = slice.support(DVec2::Y);
+    let slice_end = [end.x, end.y];
+    // A, its oracle, A's and B's placements (x, y, cos, sin), B's motion
+    // and B's radius.
+    type Case<'s> = (&'s dyn SupportMap<f64>, Local, [f64; 4], [f64; 4], [f64; 2], f64);
+    let cases: [Case; 2] = [
+        (
+            &half,
+            Local::HalfEllipse { a: 0.5622016191482544, h: 1.4074671268463135 },
+            [-0.05714494362473488, -0.18534518778324127, 0.3994933357188446, 0.9167360987308346],
+            [-3.907733201980591, -4.786754608154297, 0.3023763650018677, 0.9531886140152206],
+            [4.546893192433294, 5.583459848797024],
+            0.8042811155319214,
+        ),
+        (
+            &slice,
+            Local::Slice { radius: 0.9364948868751526, end: slice_end },
+            [-0.8660104274749756, -1.7392363548278809, -0.9632151728121908, -0.26873133584377806],
+            [-4.853647232055664, -6.222399711608887, 0.9289209810729546, 0.370278018416513],
+            [3.233527798374004, 6.759929277517651],
+            0.9551822543144226,
+        ),
+    ];
+    for (shape, local, pa, pb, m, radius) in cases {
+        let circle = Circle::<f64>::new(radius).unwrap();
+        let ta = Transform::from_cos_sin(DVec2::new(pa[0], pa[1]), pa[2], pa[3]).unwrap();
+        let tb = Transform::from_cos_sin(DVec2::new(pb[0], pb[1]), pb[2], pb[3]).unwrap();
+        let c = Gjk::<f64>::new().cast(shape, &ta, &circle, &tb, &Motion::new(DVec2::new(m[0], m[1])).unwrap());
+        assert!(c.status.is_converged(), "{c:?}");
+        let CastOutcome::Hit(hit) = c.outcome else { panic!("expected a hit: {local:?} {c:?}") };
+        let a = Curved::new(local, ta.cos(), ta.sin(), [pa[0], pa[1]]);
+        let f = hit.fraction;
+        let b = Curved::new(
+            Local::Circle { center: [0.0, 0.0], radius },
+            tb.cos(),
+            tb.sin(),
+            [pb[0] + m[0] * f, pb[1] + m[1] * f],
+        );
+        let s = curved_pair(&a, &b, 1e-15);
+        let tol = 1e-10 * (a.reach() + b.reach());
+        assert!(s.signed.abs() <= tol + s.error, "{:e} apart at the reported contact: {c:?}", s.signed);
+        assert!(hit.error_bound < 1e-10, "{c:?}");
+    }
+}
