@@ -567,8 +567,7 @@ macro_rules! cast_suite {
             }
 
             /// Curved shapes (an ellipse, a half-ellipse or a slice against
-            /// every kind, and against an ellipse): within the configured
-            /// epsilon, as `tests/curved.rs`
+            /// every kind): within the configured epsilon, as `tests/curved.rs`
             /// judges them, by the certified branch-and-bound oracle: at the
             /// reported contact the shapes touch, and no contact is missed at
             /// 64 fractions of the motion.
@@ -578,10 +577,10 @@ macro_rules! cast_suite {
                 let mut rng = Rng(11);
                 let eps_cfg = GjkConfig::<R>::default().raycast_epsilon() as f64;
                 let (mut worst, mut most) = (0.0f64, 0);
-                for i in 0..cases(600) {
+                for i in 0..cases(900) {
                     let (w, h) = (r32(rng.range(0.2, 2.0)), r32(rng.range(0.02, 2.0)));
                     // A: an ellipse, a half-ellipse or a slice (of 1e-3 rad to pi).
-                    let (curved, local_a, reach_a): (Box<dyn SupportMap<R>>, Local, f64) = match (i / 4) % 3 {
+                    let (curved, local_a, reach_a): (Box<dyn SupportMap<R>>, Local, f64) = match (i / 6) % 3 {
                         0 => (Box::new(Ellipse::<R>::new(w as R, h as R).unwrap()), Local::Ellipse { a: w / 2.0, b: h / 2.0 }, w.max(h) / 2.0),
                         1 => (Box::new(HalfEllipse::<R>::new(w as R, h as R).unwrap()), Local::HalfEllipse { a: w / 2.0, h }, (w / 2.0).max(h)),
                         _ => {
@@ -594,7 +593,7 @@ macro_rules! cast_suite {
                         }
                     };
                     let ta = Transform::new(v([r32(rng.range(-2.0, 2.0)), r32(rng.range(-2.0, 2.0))]), rng.range(-4.0, 4.0) as R).unwrap();
-                    let (geo, local): (Box<dyn SupportMap<R>>, Local) = match i % 4 {
+                    let (geo, local): (Box<dyn SupportMap<R>>, Local) = match i % 6 {
                         0 => {
                             let r = r32(rng.range(0.05, 1.0));
                             (Box::new(Circle::new(r as R).unwrap()), Local::Circle { center: [0.0, 0.0], radius: r })
@@ -609,9 +608,19 @@ macro_rules! cast_suite {
                             let (x, r) = (r32(rng.range(0.1, 1.0)), r32(rng.range(0.01, 0.5)));
                             (Box::new(Capsule::new(v([-x, 0.0]), v([x, 0.0]), r as R).unwrap()), Local::Capsule { a: [-x, 0.0], b: [x, 0.0], radius: r })
                         }
-                        _ => {
+                        3 => {
                             let (w2, h2) = (r32(rng.range(0.1, 2.0)), r32(rng.range(0.05, 2.0)));
                             (Box::new(Ellipse::<R>::new(w2 as R, h2 as R).unwrap()), Local::Ellipse { a: w2 / 2.0, b: h2 / 2.0 })
+                        }
+                        4 => {
+                            let (w2, h2) = (r32(rng.range(0.1, 2.0)), r32(rng.range(0.05, 2.0)));
+                            (Box::new(HalfEllipse::<R>::new(w2 as R, h2 as R).unwrap()), Local::HalfEllipse { a: w2 / 2.0, h: h2 })
+                        }
+                        _ => {
+                            let (r2, theta) = (r32(rng.range(0.1, 2.0)), r32(rng.range(-3.0, 0.0).exp() * std::f64::consts::PI));
+                            let slice = Slice::<R>::new(r2 as R, theta as R).unwrap();
+                            let end = pt(slice.support(v([0.0, 1.0])));
+                            (Box::new(slice), Local::Slice { radius: r2, end })
                         }
                     };
                     let heading = rng.range(0.0, TAU);
