@@ -47,7 +47,7 @@ impl<R: Real> Ray<R> {
 
 /// GJK ray cast on any support map (radius included): advance the ray point
 /// towards the shape by the support plane's distance until it reaches the
-/// surface within `epsilon * size`. The normal is the last advancing direction,
+/// surface within `epsilon * size` (plus the ray point's own rounding). The normal is the last advancing direction,
 /// which converges to the surface normal.
 pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     shape: &S,
@@ -76,7 +76,11 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     let mut simplex = Simplex::empty_like(vertex(o, o));
     let mut iterations = 0;
     let status = loop {
-        if v.length_squared() <= tolerance * tolerance {
+        // Or within the rounding of the ray point itself (`o + d lambda`): a
+        // ray from far away cannot place it closer, and would spin to its
+        // limit.
+        let reached = tolerance + R::from_u32(4) * R::EPSILON * (o.x.abs() + o.y.abs() + lambda);
+        if v.length_squared() <= reached * reached {
             break Status::Converged;
         }
         if iterations >= max_iterations {
