@@ -85,6 +85,11 @@ impl<R: Real, P> Gjk<R, P> {
                 let intersecting = !crate::sat::Axes::new(pair, pa, pb).separated();
                 return Detection { intersecting, iterations: 1, status: Status::Converged };
             }
+            if let Some((p, polygon, _)) = pair.point_and_small_polygon() {
+                if let Some(intersecting) = crate::point_polygon::within(polygon, p, pair.radius()) {
+                    return Detection { intersecting, iterations: 1, status: Status::Converged };
+                }
+            }
             // A segment: the axes decide, as for two polygons. Not a
             // capsule: its cores are mostly apart by less than the radius,
             // which the axes cannot decide, and GJK then runs after them.

@@ -107,3 +107,40 @@ pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R
         None => Nearest::Outside { distance: R::ZERO, normal: unit_normal(deepest), point: corner },
     })
 }
+
+/// Whether `p` lies within `radius` of the counter-clockwise polygon
+/// `vertices` (3 to [`M`]), touching included: inside every edge's line, or
+/// within `radius` of some edge. Every edge is measured at once with
+/// products only (an edge's interior by `cross^2 <= r^2 |e|^2`, its ends by
+/// their squared distances), so the verdict waits for no division, square
+/// root or branch on the geometry.
+///
+/// `None` where the products could under- or overflow.
+pub(crate) fn within<R: Real>(vertices: &[V2<R>], p: V2<R>, radius: R) -> Option<bool> {
+    let n = vertices.len();
+    if !(3..=M).contains(&n) {
+        return None;
+    }
+    let rr = radius * radius;
+    let (mut outside, mut near, mut usable) = (false, false, true);
+    for i in 0..M {
+        // Slots past the last edge repeat the closing one, as in `nearest`.
+        let (from, to) = (vertices[i.min(n - 1)], vertices[if i + 1 < n { i + 1 } else { 0 }]);
+        let (ex, ey) = (to.x - from.x, to.y - from.y);
+        let (wx, wy) = (p.x - from.x, p.y - from.y);
+        let (fx, fy) = (wx - ex, wy - ey);
+        let length2 = ex * ex + ey * ey;
+        let along = wx * ex + wy * ey;
+        let across = ey * wx - ex * wy;
+        let (start, end) = (wx * wx + wy * wy, fx * fx + fy * fy);
+        let before = along <= R::ZERO;
+        let beyond = along >= length2;
+        near |=
+            (before & (start <= rr)) | (beyond & (end <= rr)) | (!before & !beyond & (across * across <= rr * length2));
+        outside |= across > R::ZERO;
+        // Products of four lengths: normal numbers, so that they round
+        // relatively (edges under about 1e-9 in f32 leave it to GJK).
+        usable &= (length2 * length2 >= R::MIN_POSITIVE) & (length2 * start).is_finite() & (rr * length2).is_finite();
+    }
+    usable.then_some(near | !outside)
+}

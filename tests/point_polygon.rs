@@ -1,7 +1,8 @@
 //! A circle against a polygon of at most eight vertices, types known when the
-//! program is compiled, is answered in closed form on hosts (distance, and
-//! penetration with EPA as the solver): the polygon's nearest edge or vertex
-//! to the circle's centre. Checked here against the exact oracle, as the GJK
+//! program is compiled, is answered in closed form on hosts (the
+//! intersection test, distance, and penetration with EPA as the solver): the
+//! polygon's nearest edge or vertex to the circle's centre, or for the test
+//! whether the centre is within the radius of any edge. Checked here against the exact oracle, as the GJK
 //! and EPA path is in tests/properties.rs: random convex polygons of 3 to 8
 //! vertices and circles at scales from 1e-13 to 1e4, near the origin and far
 //! from it, placed with and without rotation, the circle as A and as B,
@@ -119,6 +120,20 @@ macro_rules! point_polygon_suite {
                         }
                     }
                 }
+                let (fast_i, slow_i) = if circle_first {
+                    (gjk.intersects(&circle, &tc, &polygon, &tp), gjk.intersects(dc, &tc, dp, &tp))
+                } else {
+                    (gjk.intersects(&polygon, &tp, &circle, &tc), gjk.intersects(dp, &tp, dc, &tc))
+                };
+                for (d, path) in [(fast_i, "closed form"), (slow_i, "gjk")] {
+                    prop_assert!(d.status.is_converged());
+                    if truth.signed_distance > bound {
+                        prop_assert!(!d.intersecting, "{path}: intersecting, exact distance {}", truth.signed_distance);
+                    }
+                    if truth.signed_distance < -bound {
+                        prop_assert!(d.intersecting, "{path}: apart, exact depth {}", truth.depth);
+                    }
+                }
                 if let (Some(f), Some(s)) = (fast_d, slow_d) {
                     prop_assert!((f.distance as f64 - s.distance as f64).abs() <= 2.0 * bound);
                 }
@@ -166,4 +181,67 @@ fn centre_beside_a_corner_takes_the_edge_normal() {
         let off = pair(&ExactShape::point([on_b.x as f64, on_b.y as f64]), &exact).signed_distance;
         assert!(off.abs() < 8.0 * f32::EPSILON as f64 * 2.0, "{m:?}: {off:e} off the polygon");
     }
+}
+
+#[path = "common/rng.rs"]
+mod rng;
+
+/// The intersection test's closed form against the exact verdict, where it
+/// is decided: circles whose centres lie all around 3- to 8-gons (beside
+/// edges, in corner regions, inside), radii within a few percent of the
+/// exact distance either way, f32 and f64.
+#[test]
+fn intersection_test_matches_the_exact_verdict() {
+    use rng::{cases, Rng};
+    use std::f64::consts::TAU;
+    macro_rules! run {
+        ($r:ty, $vec:ident) => {{
+            type R = $r;
+            let eps = R::EPSILON as f64;
+            let v = |p: Pt| $vec::new(p[0] as R, p[1] as R);
+            let gjk = Gjk::<R>::new();
+            let mut rng = Rng(0x7769_7468_696e ^ eps.to_bits());
+            let (mut apart, mut touching) = (0, 0);
+            for i in 0..cases(20_000) {
+                let n = 3 + (i % 6) as usize;
+                let phase = rng.unit();
+                let pts: Vec<Pt> = (0..n)
+                    .map(|k| {
+                        let t = (k as f64 + phase + 0.4 * rng.unit()) / n as f64 * TAU;
+                        let (a, b) = (rng.range(0.5, 1.5), rng.range(0.5, 1.5));
+                        [(a * t.cos()) as R as f64, (b * t.sin()) as R as f64]
+                    })
+                    .collect();
+                let Ok(polygon) = Polygon::<R, 8>::new(&pts.iter().map(|&p| v(p)).collect::<Vec<_>>()) else {
+                    continue;
+                };
+                let t = rng.range(0.0, TAU);
+                let reach = rng.range(0.0, 3.0);
+                let centre = [(reach * t.cos()) as R as f64, (reach * t.sin()) as R as f64];
+                let ep = transform_shape(&Shape::Polygon(pts.clone()), 1.0, 0.0, 0.0, 0.0);
+                let d = pair(&ExactShape::point(centre), &ep).signed_distance;
+                let radius = ((d.max(0.0) * rng.range(0.95, 1.05)).max(1e-3)) as R as f64;
+                let circle = Circle::<R>::at(v(centre), radius as R).unwrap();
+                let truth = pair(&transform_shape(&Shape::Circle { center: centre, radius }, 1.0, 0.0, 0.0, 0.0), &ep);
+                let l = 3.0f64.max(radius);
+                let id = Transform::IDENTITY;
+                let (a, b) = (gjk.intersects(&circle, &id, &polygon, &id), gjk.intersects(&polygon, &id, &circle, &id));
+                assert_eq!(a.intersecting, b.intersecting, "{pts:?} {centre:?} {radius}");
+                if truth.signed_distance > 8.0 * eps * l {
+                    apart += 1;
+                    assert!(
+                        !a.intersecting,
+                        "intersecting, exact distance {}: {pts:?} {centre:?} {radius}",
+                        truth.signed_distance
+                    );
+                } else if truth.signed_distance < -8.0 * eps * l {
+                    touching += 1;
+                    assert!(a.intersecting, "apart, exact depth {}: {pts:?} {centre:?} {radius}", truth.depth);
+                }
+            }
+            assert!(apart > cases(20_000) / 4 && touching > cases(20_000) / 4, "{apart} apart, {touching} overlapping");
+        }};
+    }
+    run!(f32, Vec2);
+    run!(f64, DVec2);
 }
