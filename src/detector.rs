@@ -311,14 +311,27 @@ impl<R: Real, P> Gjk<R, P> {
         };
         // The manifold and its clipping in a frame of their own on bare
         // metal: the queries above then run under a frame that holds neither.
-        in_own_frame(move || {
+        // Elsewhere the clipping alone, which inlines.
+        #[cfg(target_os = "none")]
+        return in_own_frame(move || {
             let mut manifold = Manifold::empty(normal, iterations, status);
             if separation <= margin {
                 let local = ta.inverse_rotate(V2::from_glam(normal));
                 crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold);
             }
             Ok(manifold)
-        })
+        });
+        #[cfg(not(target_os = "none"))]
+        {
+            let mut manifold = Manifold::empty(normal, iterations, status);
+            if separation <= margin {
+                let local = ta.inverse_rotate(V2::from_glam(normal));
+                in_own_frame(|| {
+                    crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold)
+                });
+            }
+            Ok(manifold)
+        }
     }
 
     /// What a manifold starts from: the distance query's normal and
