@@ -44,8 +44,6 @@ KNOWN_MISSES=(
   "stack budget: f64 raycast ellipse (GJK ray cast) "
   "stack budget: f64 cast "
   "stack budget: f64 manifold "
-  "stack budget: f32 manifold polygon4-hexagon, overlapping "
-  "stack budget: f32 time of impact "
   "stack budget: f64 time of impact "
   "flash budget: (3) + EPA penetration "
   "flash budget: (5) every shape and query, f32 "

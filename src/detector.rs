@@ -316,12 +316,29 @@ impl<R: Real, P> Gjk<R, P> {
             // would vouch for.
             return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
         };
-        let mut manifold = Manifold::empty(normal, iterations, status);
-        if separation <= margin {
-            let local = ta.inverse_rotate(V2::from_glam(normal));
-            in_own_frame(|| crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold));
+        // The manifold and its clipping in a frame of their own on bare
+        // metal: the queries above then run under a frame that holds neither.
+        // Elsewhere the clipping alone, which inlines.
+        #[cfg(target_os = "none")]
+        return in_own_frame(move || {
+            let mut manifold = Manifold::empty(normal, iterations, status);
+            if separation <= margin {
+                let local = ta.inverse_rotate(V2::from_glam(normal));
+                crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold);
+            }
+            Ok(manifold)
+        });
+        #[cfg(not(target_os = "none"))]
+        {
+            let mut manifold = Manifold::empty(normal, iterations, status);
+            if separation <= margin {
+                let local = ta.inverse_rotate(V2::from_glam(normal));
+                in_own_frame(|| {
+                    crate::manifold::contact_points(&Pair::new(a, ta, b, tb), local, margin, &mut manifold)
+                });
+            }
+            Ok(manifold)
         }
-        Ok(manifold)
     }
 
     /// What a manifold starts from: the distance query's normal and
@@ -339,9 +356,14 @@ impl<R: Real, P> Gjk<R, P> {
         // frame: one frame for both paths peaks higher, and a third GJK loop
         // would grow the module.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
-        return nearest(in_own_frame(|| self.distance(a, ta, b, tb)), || {
-            in_own_frame(|| self.penetration(a, ta, b, tb))
-        });
+        {
+            // The distance's answer dies before the penetration query runs,
+            // so that this frame does not hold both.
+            if let Some(s) = in_own_frame(|| self.distance(a, ta, b, tb)) {
+                return Some(apart(s));
+            }
+            return in_own_frame(|| self.penetration(a, ta, b, tb)).map(overlapping);
+        }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         self.contact_of(Pair::new(a, ta, b, tb))
     }

@@ -214,7 +214,10 @@ where
     let mut iterations = 0;
     let mut last: Option<(R, Separation<R>)> = None;
     loop {
-        let (ta, tb) = (sweep_a.transform_at(t), sweep_b.transform_at(t));
+        // The placements made one by one and the answer bound by reference:
+        // no copies of them in this frame, which the distance query runs on.
+        let ta = sweep_a.transform_at(t);
+        let tb = sweep_b.transform_at(t);
         iterations += 1;
         let done = |t: R, sep: &Separation<R>, status| {
             let (ta, tb) = (sweep_a.transform_at(t), sweep_b.transform_at(t));
@@ -229,7 +232,7 @@ where
             };
             TimeOfImpact { outcome: ImpactOutcome::Hit(hit), iterations, status }
         };
-        let Some(sep) = distance(&ta, &tb) else {
+        let Some(ref sep) = distance(&ta, &tb) else {
             return match last {
                 // Touching where the last step proved them apart: rounding
                 // at a target of about zero. The last time is still safe,
@@ -243,7 +246,7 @@ where
             return TimeOfImpact { outcome: ImpactOutcome::Start(start), iterations, status: Status::Converged };
         }
         if sep.distance <= target + tolerance {
-            return done(t, &sep, Status::Converged);
+            return done(t, sep, Status::Converged);
         }
         let n = V2::from_glam(sep.normal);
         let gap = gap_along(a, &ta, b, &tb, n).min(sep.distance);
@@ -255,7 +258,7 @@ where
         // No gap beyond the target along this normal (a normal iterated to
         // a tolerance wider than the caller's): no step can be proved safe.
         if gap <= target {
-            return done(t, &sep, Status::IterationLimit);
+            return done(t, sep, Status::IterationLimit);
         }
         // The gap never closes to the target: not within the step either.
         if closing <= R::ZERO {
@@ -266,9 +269,9 @@ where
             return miss;
         }
         if iterations >= config.max_iterations() {
-            return done(t, &sep, Status::IterationLimit);
+            return done(t, sep, Status::IterationLimit);
         }
-        last = Some((t, sep));
+        last = Some((t, *sep));
         t = next;
     }
 }
@@ -291,7 +294,9 @@ fn start_overlap<R: Real>(penetration: Option<Penetration<R>>, iterations: u32) 
 /// `n` (from A towards B): B's lowest point along `n` less A's highest, from
 /// one support point of their difference, less its rounding at the scale of
 /// the pair. (The placements' own rounding, far from the origin, is the
-/// caller's, as in every query.)
+/// caller's, as in every query.) Out of line on bare metal, so that its
+/// pair is not in the advancement's frame while the distance query runs.
+#[cfg_attr(target_os = "none", inline(never))]
 fn gap_along<R, A, B>(a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>, n: V2<R>) -> R
 where
     R: Real,
