@@ -90,16 +90,15 @@ impl<R: Real, P> Gjk<R, P> {
                     return Detection { intersecting, iterations: 1, status: Status::Converged };
                 }
             }
-            // A segment: the axes decide, as for two polygons. A capsule:
-            // its cores are mostly apart by less than the radius, which the
-            // axes cannot decide; every vertex against every edge can.
+            // A segment: the axes decide, as for two polygons. Not a
+            // capsule: its cores are mostly apart by less than the radius,
+            // which the axes cannot decide, and GJK's two or so iterations
+            // beat every vertex against every edge.
             if pair.radius() == R::ZERO {
                 if let Some(axes) = crate::sat::Axes::of_segment_and_polygon(pair) {
                     let intersecting = !axes.separated();
                     return Detection { intersecting, iterations: 1, status: Status::Converged };
                 }
-            } else if let Some(intersecting) = segment_polygon_overlap(pair) {
-                return Detection { intersecting, iterations: 1, status: Status::Converged };
             }
         }
         let (intersecting, iterations, status) = intersect(
@@ -868,29 +867,6 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
         bound
     } else {
         cap
-    }
-}
-
-/// Whether a segment core and a small polygon (the pair's, where it has
-/// them) lie within the radii of each other, in the pair frame.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-#[inline(always)]
-fn segment_polygon_overlap<R, A, B>(pair: &Pair<'_, R, A, B>) -> Option<bool>
-where
-    R: Real,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    let ([s0, s1], polygon, segment_is_a) = pair.segment_and_small_polygon()?;
-    let radius = pair.radius();
-    if segment_is_a {
-        let mut placed = [V2::zero(); crate::polytope::SMALL_POLYGON_MAX];
-        for (p, &q) in placed.iter_mut().zip(polygon) {
-            *p = pair.b_to_pair(q);
-        }
-        crate::point_polygon::segment_within(&placed[..polygon.len().min(placed.len())], s0, s1, radius)
-    } else {
-        crate::point_polygon::segment_within(polygon, pair.b_to_pair(s0), pair.b_to_pair(s1), radius)
     }
 }
 

@@ -112,83 +112,47 @@ pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R
 /// `vertices` (3 to [`M`]), touching included: inside every edge's line, or
 /// within `radius` of some edge. Every edge is measured at once with
 /// products only (an edge's interior by `cross^2 <= r^2 |e|^2`, its ends by
-/// their squared distances), so the verdict waits for no division, square
-/// root or branch on the geometry.
+/// their squared distances) in lanes folded by minimum and maximum, so the
+/// verdict waits for no division, square root or branch on the geometry.
 ///
 /// `None` where the products could under- or overflow.
 pub(crate) fn within<R: Real>(vertices: &[V2<R>], p: V2<R>, radius: R) -> Option<bool> {
-    let reach = EdgeReach::new(vertices, p, radius * radius)?;
-    Some(reach.near | !reach.outside.iter().fold(false, |any, &o| any | o))
-}
-
-/// Whether the segment from `s0` to `s1` lies within `radius` of the
-/// counter-clockwise polygon `vertices` (3 to [`M`]), touching included:
-/// the two convex sets cross, or one's vertex lies within `radius` of the
-/// other's edge (where two convex polygons are nearest, in the plane). As
-/// [`within`], with products only; `None` where they could under- or
-/// overflow, or the segment is a point.
-pub(crate) fn segment_within<R: Real>(vertices: &[V2<R>], s0: V2<R>, s1: V2<R>, radius: R) -> Option<bool> {
-    let rr = radius * radius;
-    let (a, b) = (EdgeReach::new(vertices, s0, rr)?, EdgeReach::new(vertices, s1, rr)?);
     let n = vertices.len();
-    let e = s1 - s0;
-    let length2 = e.length_squared();
-    let (mut near, mut left, mut right, mut usable) = (false, false, false, length2 * length2 >= R::MIN_POSITIVE);
-    for k in 0..M {
-        let w = vertices[k.min(n - 1)] - s0;
-        let (across, start) = (e.cross(w), w.length_squared());
-        near |= segment_near(w.dot(e), length2, across, start, (w - e).length_squared(), rr);
-        left |= across > R::ZERO;
-        right |= across < R::ZERO;
-        usable &= (length2 * start).is_finite() & (rr * length2).is_finite();
+    if !(3..=M).contains(&n) {
+        return None;
     }
-    // An edge's line with both ends beyond it, or the segment's line with
-    // every vertex strictly on one side, parts them (a vertex on that line
-    // is within reach of the segment, and counted there).
-    let parted = (0..M).fold(false, |any, i| any | (a.outside[i] & b.outside[i])) | !(left & right);
-    usable.then_some(a.near | b.near | near | !parted)
-}
-
-/// Whether a point at `w` from an edge's start lies within `sqrt(rr)` of
-/// the edge `e` (`along = w . e`, `length2 = |e|^2`, `across = e x w`,
-/// `start` and `end` the squared distances to its ends): at its nearer end
-/// beyond either end, else across it.
-#[inline(always)]
-fn segment_near<R: Real>(along: R, length2: R, across: R, start: R, end: R, rr: R) -> bool {
-    let before = along <= R::ZERO;
-    let beyond = along >= length2;
-    (before & (start <= rr)) | (beyond & (end <= rr)) | (!before & !beyond & (across * across <= rr * length2))
-}
-
-/// A point against every edge of a counter-clockwise polygon of 3 to [`M`]
-/// vertices: whether it lies within reach of some edge, and beyond which
-/// edges' lines it lies (slots past the last edge repeat the closing one,
-/// as in [`nearest`]).
-struct EdgeReach {
-    near: bool,
-    outside: [bool; M],
-}
-
-impl EdgeReach {
-    fn new<R: Real>(vertices: &[V2<R>], p: V2<R>, rr: R) -> Option<Self> {
-        let n = vertices.len();
-        if !(3..=M).contains(&n) {
-            return None;
-        }
-        let (mut near, mut outside, mut usable) = (false, [false; M], true);
-        for (i, beyond) in outside.iter_mut().enumerate() {
-            let (from, to) = (vertices[i.min(n - 1)], vertices[if i + 1 < n { i + 1 } else { 0 }]);
-            let (e, w) = (to - from, p - from);
-            let (length2, start) = (e.length_squared(), w.length_squared());
-            // Outward: the polygon turns counter-clockwise, so w x e.
-            let across = w.cross(e);
-            near |= segment_near(w.dot(e), length2, across, start, (w - e).length_squared(), rr);
-            *beyond = across > R::ZERO;
-            // Products of four lengths: normal numbers, so that they round
-            // relatively (edges under about 1e-9 in f32 leave it to GJK).
-            usable &=
-                (length2 * length2 >= R::MIN_POSITIVE) & (length2 * start).is_finite() & (rr * length2).is_finite();
-        }
-        usable.then_some(Self { near, outside })
+    let rr = radius * radius;
+    // Edge `i` in slot `i`; the slots past the last edge repeat the closing
+    // one, as in `nearest`.
+    let from: [V2<R>; M] = core::array::from_fn(|i| vertices[i.min(n - 1)]);
+    let to: [V2<R>; M] = core::array::from_fn(|i| vertices[if i + 1 < n { i + 1 } else { 0 }]);
+    // Per edge: at most zero where `p` is within reach of it; positive
+    // where `p` lies beyond its line.
+    let mut short = [R::ZERO; M];
+    let mut across = [R::ZERO; M];
+    let mut least = [R::ZERO; M];
+    let mut most = [R::ZERO; M];
+    for i in 0..M {
+        let (e, w) = (to[i] - from[i], p - from[i]);
+        let (length2, start) = (e.length_squared(), w.length_squared());
+        let along = w.dot(e);
+        // Outward: the polygon turns counter-clockwise, so w x e.
+        across[i] = w.cross(e);
+        let interior = across[i] * across[i] - rr * length2;
+        let end = (w - e).length_squared() - rr;
+        short[i] = if along <= R::ZERO {
+            start - rr
+        } else if along >= length2 {
+            end
+        } else {
+            interior
+        };
+        least[i] = length2 * length2;
+        most[i] = (length2 * start).max(rr * length2);
     }
+    let fold = |v: &[R; M], f: fn(R, R) -> R| v.iter().skip(1).fold(v[0], |a, &b| f(a, b));
+    // Products of four lengths: normal numbers, so that they round
+    // relatively (edges under about 1e-9 in f32 leave it to GJK).
+    let usable = fold(&least, R::min) >= R::MIN_POSITIVE && fold(&most, R::max) < R::INFINITY;
+    usable.then(|| fold(&short, R::min) <= R::ZERO || fold(&across, R::max) <= R::ZERO)
 }

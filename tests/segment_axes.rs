@@ -3,8 +3,7 @@
 //! separating axes of the segment core and the polygon: the intersection
 //! test of a segment, and the penetration (EPA as the solver) of both
 //! wherever the axes decide: cores that overlap, or an axis that parts them
-//! by more than the radius. A capsule's intersection test is every vertex
-//! of either core against every edge of the other, and the cores' axes. Checked here against the exact oracle: random
+//! by more than the radius. Checked here against the exact oracle: random
 //! polygons of 3 to 8 vertices and random segments at scales from 2^-40 to
 //! 2^13, near the origin and far from it, placed with and without rotation,
 //! either shape as A, radii from zero (segments) to twice the polygon's
