@@ -23,6 +23,25 @@ pub(crate) enum Nearest<R> {
     Inside { depth: R, normal: V2<R> },
 }
 
+/// Each edge's start and end, a slot per edge.
+type EdgeSlots<R> = ([V2<R>; M], [V2<R>; M]);
+
+/// Edge `i` of the counter-clockwise polygon `vertices` (3 to [`M`]) in
+/// slot `i`, as its start and end; the slots past the last edge repeat the
+/// closing one, which then leads no choice (ties go to the first slot).
+/// Indices are selected, not branched on, and the arithmetic runs over
+/// every slot in SIMD lanes, coordinates apart.
+#[inline(always)]
+fn edge_slots<R: Real>(vertices: &[V2<R>]) -> Option<EdgeSlots<R>> {
+    let n = vertices.len();
+    if !(3..=M).contains(&n) {
+        return None;
+    }
+    let from = core::array::from_fn(|i| vertices[i.min(n - 1)]);
+    let to = core::array::from_fn(|i| vertices[if i + 1 < n { i + 1 } else { 0 }]);
+    Some((from, to))
+}
+
 /// The nearest feature of the counter-clockwise polygon `vertices` (3 to
 /// [`M`]) to `p`. Every edge is measured with the same arithmetic, so the
 /// choice has no branch on the geometry; the answer is then computed in the
@@ -33,15 +52,7 @@ pub(crate) enum Nearest<R> {
 /// shorter than the square root of the least normal number): GJK answers.
 pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R>> {
     let n = vertices.len();
-    if !(3..=M).contains(&n) {
-        return None;
-    }
-    // Edge `i` in slot `i`; the slots past the last edge repeat the closing
-    // one, which then leads no choice (ties go to the first slot). Indices
-    // are selected, not branched on, and the arithmetic runs over every
-    // slot in SIMD lanes, coordinates apart.
-    let from: [V2<R>; M] = core::array::from_fn(|i| vertices[i.min(n - 1)]);
-    let to: [V2<R>; M] = core::array::from_fn(|i| vertices[if i + 1 < n { i + 1 } else { 0 }]);
+    let (from, to) = edge_slots(vertices)?;
     let mut along = [R::ZERO; M];
     let mut squared = [R::ZERO; M];
     let mut outward = [R::ZERO; M];
@@ -117,15 +128,8 @@ pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R
 ///
 /// `None` where the products could under- or overflow.
 pub(crate) fn within<R: Real>(vertices: &[V2<R>], p: V2<R>, radius: R) -> Option<bool> {
-    let n = vertices.len();
-    if !(3..=M).contains(&n) {
-        return None;
-    }
+    let (from, to) = edge_slots(vertices)?;
     let rr = radius * radius;
-    // Edge `i` in slot `i`; the slots past the last edge repeat the closing
-    // one, as in `nearest`.
-    let from: [V2<R>; M] = core::array::from_fn(|i| vertices[i.min(n - 1)]);
-    let to: [V2<R>; M] = core::array::from_fn(|i| vertices[if i + 1 < n { i + 1 } else { 0 }]);
     // Per edge: at most zero where `p` is within reach of it; positive
     // where `p` lies beyond its line.
     let mut short = [R::ZERO; M];
