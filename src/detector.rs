@@ -315,9 +315,8 @@ impl<R: Real, P> Gjk<R, P> {
             // would vouch for.
             return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
         };
-        // The manifold and its clipping in a frame of their own on bare
-        // metal: the queries above then run under a frame that holds neither.
-        // Elsewhere the clipping alone, which inlines.
+        // On bare metal the clipping gets a frame of its own, so that the
+        // queries above never run beneath it.
         #[cfg(target_os = "none")]
         return in_own_frame(move || {
             let mut manifold = Manifold::empty(normal, iterations, status);
@@ -351,13 +350,10 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        // Bare metal and wasm ask the two queries in turn, each in its own
-        // frame: one frame for both paths peaks higher, and a third GJK loop
-        // would grow the module.
+        // Bare metal and wasm ask the two queries in turn, which keeps both
+        // the deepest frame and the module smaller than one shared GJK run.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         {
-            // The distance's answer dies before the penetration query runs,
-            // so that this frame does not hold both.
             if let Some(s) = in_own_frame(|| self.distance(a, ta, b, tb)) {
                 return Some(apart(s));
             }

@@ -238,12 +238,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    // How far apart the cores may be and still count as intersecting,
-    // squared. The pair's size is asked for only with a margin: with the
-    // default (none) two polygons are tested with no square root, and a
-    // firmware that only tests polygons for overlap links none.
-    let margin = if detect_epsilon == R::ZERO { R::ZERO } else { detect_epsilon * pair.scale() };
-    let reach = pair.radius() + margin;
+    let reach = pair.detect_reach(detect_epsilon);
     let reach2 = reach * reach;
     // The gap tolerance, for curved cores only (computed on first use).
     let mut tolerance = None;

@@ -214,8 +214,8 @@ where
     let mut iterations = 0;
     let mut last: Option<(R, Separation<R>)> = None;
     loop {
-        // The placements made one by one and the answer bound by reference:
-        // no copies of them in this frame, which the distance query runs on.
+        // Made one at a time and borrowed, so that the distance query runs
+        // on a small frame.
         let ta = sweep_a.transform_at(t);
         let tb = sweep_b.transform_at(t);
         iterations += 1;
@@ -294,8 +294,8 @@ fn start_overlap<R: Real>(penetration: Option<Penetration<R>>, iterations: u32) 
 /// `n` (from A towards B): B's lowest point along `n` less A's highest, from
 /// one support point of their difference, less its rounding at the scale of
 /// the pair. (The placements' own rounding, far from the origin, is the
-/// caller's, as in every query.) Out of line on bare metal, so that its
-/// pair is not in the advancement's frame while the distance query runs.
+/// caller's, as in every query.) Out of line on bare metal, to keep the
+/// advancement's frame small.
 #[cfg_attr(target_os = "none", inline(never))]
 fn gap_along<R, A, B>(a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>, n: V2<R>) -> R
 where

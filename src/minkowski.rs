@@ -122,6 +122,16 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn radius(&self) -> R {
         self.a.radius() + self.b.radius()
     }
+    /// How far apart the cores may be and still count as intersecting: the
+    /// radii, widened by `detect_epsilon` times the pair's size. The size
+    /// is asked for only with a margin: with the default (none) two
+    /// polygons are tested with no square root, and a firmware that only
+    /// tests polygons for overlap links none.
+    #[inline(always)]
+    pub fn detect_reach(&self, detect_epsilon: R) -> R {
+        let margin = if detect_epsilon == R::ZERO { R::ZERO } else { detect_epsilon * self.scale() };
+        self.radius() + margin
+    }
     #[inline(always)]
     pub fn radius_a(&self) -> R {
         self.a.radius()

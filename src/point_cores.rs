@@ -18,8 +18,7 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let margin = if detect_epsilon == R::ZERO { R::ZERO } else { detect_epsilon * pair.scale() };
-    let reach = pair.radius() + margin;
+    let reach = pair.detect_reach(detect_epsilon);
     let intersecting = pair.centers.length_squared() <= reach * reach;
     Detection { intersecting, iterations: if intersecting { 1 } else { 2 }, status: Status::Converged }
 }
@@ -72,14 +71,15 @@ impl<R: Real> PointCores<R> {
     {
         let (core_distance, normal) = self.w.w.try_length_and_unit()?;
         let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
-        if core_distance <= radius_a + radius_b {
+        let radius = radius_a + radius_b;
+        if core_distance <= radius {
             return None;
         }
         // The simplex's witness points are weighted sums from zero: a -0
         // comes out +0.
         let (a, b) = (V2::zero() + self.w.a, V2::zero() + self.w.b);
         Some(Separation {
-            distance: (core_distance - (radius_a + radius_b)).max(R::ZERO),
+            distance: (core_distance - radius).max(R::ZERO),
             normal: pair.to_world_vector(normal),
             point_a: pair.to_world_point(a + normal * radius_a),
             point_b: pair.to_world_point(b - normal * radius_b),

@@ -75,11 +75,12 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     // each new x as the ray advances.
     let mut simplex = Simplex::empty_like(vertex(o, o));
     let mut iterations = 0;
+    let origin_size = o.x.abs() + o.y.abs();
     let status = loop {
         // Or within the rounding of the ray point itself (`o + d lambda`): a
         // ray from far away cannot place it closer, and would spin to its
         // limit.
-        let reached = tolerance + R::from_u32(4) * R::EPSILON * (o.x.abs() + o.y.abs() + lambda);
+        let reached = tolerance + R::from_u32(4) * R::EPSILON * (origin_size + lambda);
         if v.length_squared() <= reached * reached {
             break Status::Converged;
         }
