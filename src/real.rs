@@ -40,18 +40,21 @@ mod sealed {
             None
         }
 
-        /// The smallest dot product with `d` of eight vertices given by
-        /// their coordinates: in SIMD where the target has it (the
-        /// separating-axis test's inner loop), a scalar scan elsewhere.
+        /// For each of eight axes (`nx`, `ny`, not unit), the least dot
+        /// product of eight vertices (`xs`, `ys`) with it: the
+        /// separating-axis test's inner loop. Each axis folds the vertices
+        /// in order, keeping the smaller (the one it has on a tie), so SIMD
+        /// lanes, where the target has them, give the scalar fold's bits.
         #[inline(always)]
-        fn min_dot8(xs: &[Self; 8], ys: &[Self; 8], d: super::V2<Self>) -> Self
+        fn least_dots8(nx: &[Self; 8], ny: &[Self; 8], xs: &[Self; 8], ys: &[Self; 8]) -> [Self; 8]
         where
             Self: super::Real,
         {
-            let mut least = Self::INFINITY;
+            let mut least = [Self::INFINITY; 8];
             for (&x, &y) in xs.iter().zip(ys) {
-                let dot = x * d.x + y * d.y;
-                least = core::hint::select_unpredictable(dot < least, dot, least);
+                for i in 0..8 {
+                    least[i] = super::lesser(nx[i] * x + ny[i] * y, least[i]);
+                }
             }
             least
         }
@@ -70,8 +73,8 @@ mod sealed {
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
-        fn min_dot8(xs: &[f32; 8], ys: &[f32; 8], d: super::V2<f32>) -> f32 {
-            super::sse2::min_dot8_f32(xs, ys, d)
+        fn least_dots8(nx: &[f32; 8], ny: &[f32; 8], xs: &[f32; 8], ys: &[f32; 8]) -> [f32; 8] {
+            super::sse2::least_dots8_f32(nx, ny, xs, ys)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         const SIMD_SCAN: bool = true;
@@ -92,8 +95,8 @@ mod sealed {
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
-        fn min_dot8(xs: &[f64; 8], ys: &[f64; 8], d: super::V2<f64>) -> f64 {
-            super::sse2::min_dot8_f64(xs, ys, d)
+        fn least_dots8(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
+            super::sse2::least_dots8_f64(nx, ny, xs, ys)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         const SIMD_SCAN: bool = true;
@@ -255,15 +258,15 @@ mod sse2 {
     }
 
     #[inline(always)]
-    pub fn min_dot8_f32(xs: &[f32; 8], ys: &[f32; 8], d: V2<f32>) -> f32 {
+    pub fn least_dots8_f32(nx: &[f32; 8], ny: &[f32; 8], xs: &[f32; 8], ys: &[f32; 8]) -> [f32; 8] {
         // SAFETY: as above.
-        unsafe { least8_f32(xs, ys, d) }
+        unsafe { least_dots8_sse_f32(nx, ny, xs, ys) }
     }
 
     #[inline(always)]
-    pub fn min_dot8_f64(xs: &[f64; 8], ys: &[f64; 8], d: V2<f64>) -> f64 {
+    pub fn least_dots8_f64(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
         // SAFETY: as above.
-        unsafe { least8_f64(xs, ys, d) }
+        unsafe { least_dots8_sse_f64(nx, ny, xs, ys) }
     }
 
     /// The dots of vertices 0 to 3 and 4 to 7, four lanes each.
@@ -293,34 +296,45 @@ mod sse2 {
         [dots(0), dots(2), dots(4), dots(6)]
     }
 
+    /// Eight axes in two registers of four lanes, the vertices broadcast
+    /// one at a time: a multiply-add and a minimum a vertex for four axes,
+    /// and no sum across lanes. `_mm_min_ps(dot, least)` keeps `least`
+    /// unless `dot` is smaller, as the scalar fold does.
     #[target_feature(enable = "sse2")]
     #[inline]
-    fn least8_f32(xs: &[f32; 8], ys: &[f32; 8], d: V2<f32>) -> f32 {
-        let (dx, dy) = (_mm_set1_ps(d.x), _mm_set1_ps(d.y));
-        let dots = |k: usize| {
-            let x = _mm_setr_ps(xs[k], xs[k + 1], xs[k + 2], xs[k + 3]);
-            let y = _mm_setr_ps(ys[k], ys[k + 1], ys[k + 2], ys[k + 3]);
-            _mm_add_ps(_mm_mul_ps(x, dx), _mm_mul_ps(y, dy))
-        };
-        let (low, high) = (dots(0), dots(4));
-        let m = _mm_min_ps(low, high);
-        let m = _mm_min_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
-        let m = _mm_min_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m));
-        _mm_cvtss_f32(m)
+    fn least_dots8_sse_f32(nx: &[f32; 8], ny: &[f32; 8], xs: &[f32; 8], ys: &[f32; 8]) -> [f32; 8] {
+        let quad = |a: &[f32; 8], k: usize| _mm_setr_ps(a[k], a[k + 1], a[k + 2], a[k + 3]);
+        let (nx0, nx1, ny0, ny1) = (quad(nx, 0), quad(nx, 4), quad(ny, 0), quad(ny, 4));
+        let mut least = [_mm_set1_ps(f32::INFINITY); 2];
+        for (&x, &y) in xs.iter().zip(ys) {
+            let (x, y) = (_mm_set1_ps(x), _mm_set1_ps(y));
+            least[0] = _mm_min_ps(_mm_add_ps(_mm_mul_ps(nx0, x), _mm_mul_ps(ny0, y)), least[0]);
+            least[1] = _mm_min_ps(_mm_add_ps(_mm_mul_ps(nx1, x), _mm_mul_ps(ny1, y)), least[1]);
+        }
+        // SAFETY: two registers of four f32 lanes are eight f32s, in lane
+        // order, and every bit pattern is a valid f32.
+        unsafe { core::mem::transmute::<[__m128; 2], [f32; 8]>(least) }
     }
 
+    /// Two lanes: an axis at a time, its eight dots in four registers
+    /// folded to one. With two lanes a register, broadcasting each vertex
+    /// (as [`least_dots8_sse_f32`] does) saves no work and spills. The
+    /// minimum is the scalar fold's, the sign of a zero aside, which no
+    /// reach's use tells apart (`> 0`, `0 - s`).
     #[target_feature(enable = "sse2")]
     #[inline]
-    fn least8_f64(xs: &[f64; 8], ys: &[f64; 8], d: V2<f64>) -> f64 {
-        let (dx, dy) = (_mm_set1_pd(d.x), _mm_set1_pd(d.y));
-        let dots = |k: usize| {
-            let x = _mm_setr_pd(xs[k], xs[k + 1]);
-            let y = _mm_setr_pd(ys[k], ys[k + 1]);
-            _mm_add_pd(_mm_mul_pd(x, dx), _mm_mul_pd(y, dy))
-        };
-        let (a, b, c, e) = (dots(0), dots(2), dots(4), dots(6));
-        let m = _mm_min_pd(_mm_min_pd(a, b), _mm_min_pd(c, e));
-        _mm_cvtsd_f64(_mm_min_pd(m, _mm_shuffle_pd::<0b01>(m, m)))
+    fn least_dots8_sse_f64(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
+        let pair = |a: &[f64; 8], k: usize| _mm_setr_pd(a[k], a[k + 1]);
+        let (x, y) = (
+            [pair(xs, 0), pair(xs, 2), pair(xs, 4), pair(xs, 6)],
+            [pair(ys, 0), pair(ys, 2), pair(ys, 4), pair(ys, 6)],
+        );
+        core::array::from_fn(|i| {
+            let (dx, dy) = (_mm_set1_pd(nx[i]), _mm_set1_pd(ny[i]));
+            let dot = |k: usize| _mm_add_pd(_mm_mul_pd(dx, x[k]), _mm_mul_pd(dy, y[k]));
+            let m = _mm_min_pd(_mm_min_pd(dot(0), dot(1)), _mm_min_pd(dot(2), dot(3)));
+            _mm_cvtsd_f64(_mm_min_pd(m, _mm_shuffle_pd::<0b01>(m, m)))
+        })
     }
 
     #[target_feature(enable = "sse2")]
@@ -499,6 +513,17 @@ macro_rules! impl_real {
 
 impl_real!(f32, glam::Vec2, crate::hw_sqrt::sqrtf, crate::trig::sin_cos_f32, libm::atan2f, 4097.0, 1.0e15);
 impl_real!(f64, glam::DVec2, libm::sqrt, sin_cos_f64, libm::atan2, 134_217_729.0, 1.0e150);
+
+/// The smaller of `dot` and `least`, `least` on a tie (and on a NaN): a
+/// comparison and a select, which an SSE minimum does in every lane at once.
+#[inline(always)]
+pub(crate) fn lesser<R: PartialOrd>(dot: R, least: R) -> R {
+    if dot < least {
+        dot
+    } else {
+        least
+    }
+}
 
 /// f64 keeps libm's correctly reduced sine and cosine: f64 code pays for soft
 /// double arithmetic anyway where there is no double FPU.

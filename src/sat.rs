@@ -10,7 +10,7 @@
 
 use crate::minkowski::Pair;
 use crate::polytope::{first_max, SMALL_POLYGON_MAX};
-use crate::real::{Real, V2};
+use crate::real::{lesser, Real, V2};
 use crate::shape::SupportMap;
 
 const M: usize = SMALL_POLYGON_MAX;
@@ -34,33 +34,35 @@ impl<R: Real> Padded<R> {
     }
 
     /// The outward normal of edge `i` (not unit): the edge turned clockwise,
-    /// the polygon being counter-clockwise.
+    /// the polygon being counter-clockwise. The slot after the last vertex
+    /// holds the first, so the closing edge needs no test of the length,
+    /// and every slot past it has a zero normal.
     #[inline(always)]
     fn normal(&self, i: usize) -> V2<R> {
-        let next = if i + 1 < self.len { self.v[(i + 1) % M] } else { self.v[0] };
-        (next - self.v[i % M]).perp_cw()
+        (self.v[(i + 1) % M] - self.v[i % M]).perp_cw()
     }
 }
 
 /// How far `other` reaches past edge `i` of `own` along its outward normal
 /// `n` (not unit): the least dot product of `other`'s vertices with it,
-/// measured from the edge.
+/// measured from the edge: what [`faces`] gives that axis.
 #[inline(always)]
 fn reach<R: Real>(own: &Padded<R>, other: &Padded<R>, n: V2<R>, i: usize) -> R {
-    R::min_dot8(&other.xs, &other.ys, n) - n.dot(own.v[i % M])
+    let least = (0..M).fold(R::INFINITY, |least, j| lesser(n.x * other.xs[j] + n.y * other.ys[j], least));
+    least - (n.x * own.xs[i % M] + n.y * own.ys[i % M])
 }
 
 /// For every edge slot of `own`: the outward normal (not unit) and the least
 /// dot product of `other`'s vertices with it, measured from the edge (how
 /// far `other` reaches past the edge's line, times the normal's length).
-/// Slots past the last edge get a separation of minus infinity.
+/// Slots past the last edge have a zero normal and a reach of zero, which
+/// separates nothing and, scaled, leads nothing ([`scaled_separation`]).
 #[inline(always)]
 fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
     let normals: [V2<R>; M] = core::array::from_fn(|i| own.normal(i));
-    let least = core::array::from_fn(|i| {
-        let reach = reach(own, other, normals[i], i);
-        core::hint::select_unpredictable(i < own.len, reach, -R::INFINITY)
-    });
+    let (nx, ny) = (normals.map(|n| n.x), normals.map(|n| n.y));
+    let least = R::least_dots8(&nx, &ny, &other.xs, &other.ys);
+    let least = core::array::from_fn(|i| least[i] - (nx[i] * own.xs[i] + ny[i] * own.ys[i]));
     (normals, least)
 }
 
