@@ -665,3 +665,55 @@ impl<R: Real> Mul<R> for V2<R> {
         Self::new(self.x * s, self.y * s)
     }
 }
+
+#[cfg(all(test, target_arch = "x86_64", target_feature = "sse2"))]
+mod tests {
+    use super::lesser;
+
+    /// The scalar fold that hosts without SSE2 run: every axis folds the
+    /// vertices in order, keeping the smaller.
+    fn folded<R: Copy + PartialOrd + core::ops::Mul<Output = R> + core::ops::Add<Output = R>>(
+        nx: &[R; 8],
+        ny: &[R; 8],
+        xs: &[R; 8],
+        ys: &[R; 8],
+        infinity: R,
+    ) -> [R; 8] {
+        core::array::from_fn(|i| (0..8).fold(infinity, |least, j| lesser(nx[i] * xs[j] + ny[i] * ys[j], least)))
+    }
+
+    /// Small integers (exact products, many ties and zeros of both signs)
+    /// half the time, spread values otherwise, and a large one now and then:
+    /// finite, as bounded coordinates and their edges are.
+    fn values(seed: &mut u64) -> [f64; 8] {
+        core::array::from_fn(|_| {
+            *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let bits = *seed >> 11;
+            match bits % 16 {
+                0 => -0.0,
+                1 => 1e15,
+                2..=8 => (bits >> 8) as f64 % 7.0 - 3.0,
+                _ => ((bits >> 4) as f64 / (1u64 << 49) as f64 - 0.5) * 1e3,
+            }
+        })
+    }
+
+    #[test]
+    fn sse_minima_are_the_scalar_folds() {
+        let mut seed = 7;
+        for _ in 0..20_000 {
+            let [nx, ny, xs, ys] = [0; 4].map(|_| values(&mut seed));
+            // f32: the same bits, zeros' signs included.
+            let single = |a: [f64; 8]| a.map(|x| x as f32);
+            let (nx32, ny32, xs32, ys32) = (single(nx), single(ny), single(xs), single(ys));
+            let lanes = super::sse2::least_dots8_f32(&nx32, &ny32, &xs32, &ys32);
+            let scalar = folded(&nx32, &ny32, &xs32, &ys32, f32::INFINITY);
+            assert_eq!(lanes.map(f32::to_bits), scalar.map(f32::to_bits), "{nx32:?} {ny32:?} {xs32:?} {ys32:?}");
+            // f64: the same values (a tree of minima may differ in a zero's
+            // sign).
+            let lanes = super::sse2::least_dots8_f64(&nx, &ny, &xs, &ys);
+            let scalar = folded(&nx, &ny, &xs, &ys, f64::INFINITY);
+            assert_eq!(lanes, scalar, "{nx:?} {ny:?} {xs:?} {ys:?}");
+        }
+    }
+}
