@@ -42,6 +42,108 @@ fn edge_slots<R: Real>(vertices: &[V2<R>]) -> Option<EdgeSlots<R>> {
     Some((from, to))
 }
 
+/// Every edge measured from `p` with the same arithmetic, a SIMD lane an
+/// edge: what the queries choose the nearest feature from.
+struct Lanes<R> {
+    from: [V2<R>; M],
+    to: [V2<R>; M],
+    /// The clamped parameter of the nearest point on each edge.
+    along: [R; M],
+    /// The squared distance to that point.
+    squared: [R; M],
+    /// The outward normal (not unit) dotted with the offset: positive
+    /// outside the edge's line.
+    outward: [R; M],
+    /// The edge's squared length.
+    ee: [R; M],
+    /// The polygon's vertex count.
+    n: usize,
+}
+
+impl<R: Real> Lanes<R> {
+    /// `None` where the squares this takes could under- or overflow (edges
+    /// shorter than the square root of the least normal number).
+    #[inline(always)]
+    fn new(vertices: &[V2<R>], p: V2<R>) -> Option<Self> {
+        let (from, to) = edge_slots(vertices)?;
+        let mut along = [R::ZERO; M];
+        let mut squared = [R::ZERO; M];
+        let mut outward = [R::ZERO; M];
+        let mut ee = [R::ONE; M];
+        let mut usable = true;
+        for i in 0..M {
+            let (ex, ey) = (to[i].x - from[i].x, to[i].y - from[i].y);
+            let (wx, wy) = (p.x - from[i].x, p.y - from[i].y);
+            let length2 = ex * ex + ey * ey;
+            let t = ((wx * ex + wy * ey) / length2).max(R::ZERO).min(R::ONE);
+            let (dx, dy) = (wx - ex * t, wy - ey * t);
+            usable &= (length2 >= R::MIN_POSITIVE) & (length2 * (wx * wx + wy * wy)).is_finite();
+            along[i] = t;
+            ee[i] = length2;
+            squared[i] = dx * dx + dy * dy;
+            outward[i] = ey * wx - ex * wy;
+        }
+        usable.then_some(Self { from, to, along, squared, outward, ee, n: vertices.len() })
+    }
+
+    #[inline(always)]
+    fn edge(&self, i: usize) -> V2<R> {
+        self.to[i % M] - self.from[i % M]
+    }
+
+    #[inline(always)]
+    fn unit_normal(&self, i: usize) -> V2<R> {
+        self.edge(i).perp_cw().try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO))
+    }
+
+    /// The edge whose line `p` lies deepest beyond (or least inside).
+    #[inline(always)]
+    fn deepest(&self) -> usize {
+        first_max(&self.outward)
+    }
+
+    /// The distance, the unit normal from the polygon towards `p` and the
+    /// nearest point, as they are where `p` is outside (or on the
+    /// boundary): the nearest edge's signed distance, or its corner's
+    /// offset.
+    #[inline(always)]
+    fn outside(&self, p: V2<R>, deepest: usize) -> (R, V2<R>, V2<R>) {
+        let n = self.n;
+        let mut best = first_max(&self.squared.map(|d| -d));
+        // A corner, where the edge on its other side has the point's foot
+        // inside it and the point beyond its line: that edge's region. Next
+        // to the corner the two squared distances differ by the square of
+        // the foot's offset from it, which rounding hides, while the two
+        // normals differ by its first power.
+        if !(self.along[best] > R::ZERO && self.along[best] < R::ONE) {
+            let adjacent = match self.along[best] > R::ZERO {
+                true if best + 1 >= n => 0,
+                true => best + 1,
+                false if best == 0 => n - 1,
+                false => best - 1,
+            };
+            let inside = self.along[adjacent % M] > R::ZERO && self.along[adjacent % M] < R::ONE;
+            if inside && self.outward[adjacent % M] > R::ZERO {
+                best = adjacent % M;
+            }
+        }
+        let t = self.along[best];
+        if t > R::ZERO && t < R::ONE {
+            // Across the edge: the signed distance to its line.
+            let length = self.ee[best].sqrt();
+            let normal = self.edge(best).perp_cw() * (R::ONE / length);
+            let distance = (self.outward[best] / length).max(R::ZERO);
+            return (distance, normal, p - normal * distance);
+        }
+        let corner = if t > R::ZERO { self.to[best] } else { self.from[best] };
+        match (p - corner).try_length_and_unit() {
+            Some((distance, normal)) => (distance, normal, corner),
+            // On the vertex: touching, along the deepest edge's normal.
+            None => (R::ZERO, self.unit_normal(deepest), corner),
+        }
+    }
+}
+
 /// The nearest feature of the counter-clockwise polygon `vertices` (3 to
 /// [`M`]) to `p`. Every edge is measured with the same arithmetic, so the
 /// choice has no branch on the geometry; the answer is then computed in the
@@ -51,72 +153,29 @@ fn edge_slots<R: Real>(vertices: &[V2<R>]) -> Option<EdgeSlots<R>> {
 /// `None` where the squares this takes could under- or overflow (edges
 /// shorter than the square root of the least normal number): GJK answers.
 pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R>> {
-    let n = vertices.len();
-    let (from, to) = edge_slots(vertices)?;
-    let mut along = [R::ZERO; M];
-    let mut squared = [R::ZERO; M];
-    let mut outward = [R::ZERO; M];
-    let mut ee = [R::ONE; M];
-    let mut usable = true;
-    for i in 0..M {
-        let (ex, ey) = (to[i].x - from[i].x, to[i].y - from[i].y);
-        let (wx, wy) = (p.x - from[i].x, p.y - from[i].y);
-        let length2 = ex * ex + ey * ey;
-        // The clamped parameter of the nearest point, the squared distance
-        // to it, and the outward normal (not unit) dotted with the offset:
-        // positive outside the edge's line.
-        let t = ((wx * ex + wy * ey) / length2).max(R::ZERO).min(R::ONE);
-        let (dx, dy) = (wx - ex * t, wy - ey * t);
-        usable &= (length2 >= R::MIN_POSITIVE) & (length2 * (wx * wx + wy * wy)).is_finite();
-        along[i] = t;
-        ee[i] = length2;
-        squared[i] = dx * dx + dy * dy;
-        outward[i] = ey * wx - ex * wy;
-    }
-    if !usable {
-        return None;
-    }
-    let edge = |i: usize| to[i % M] - from[i % M];
-    let unit_normal = |i: usize| edge(i).perp_cw().try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
-    let deepest = first_max(&outward);
-    if outward[deepest] < R::ZERO {
+    let lanes = Lanes::new(vertices, p)?;
+    let deepest = lanes.deepest();
+    if lanes.outward[deepest] < R::ZERO {
         // Inside every edge's line: the least depth is over the unit normals.
-        let least: [R; M] = core::array::from_fn(|i| outward[i] / ee[i].sqrt());
+        let least: [R; M] = core::array::from_fn(|i| lanes.outward[i] / lanes.ee[i].sqrt());
         let best = first_max(&least);
-        return Some(Nearest::Inside { depth: -least[best], normal: unit_normal(best) });
+        return Some(Nearest::Inside { depth: -least[best], normal: lanes.unit_normal(best) });
     }
-    let mut best = first_max(&squared.map(|d| -d));
-    // A corner, where the edge on its other side has the point's foot
-    // inside it and the point beyond its line: that edge's region. Next to
-    // the corner the two squared distances differ by the square of the
-    // foot's offset from it, which rounding hides, while the two normals
-    // differ by its first power.
-    if !(along[best] > R::ZERO && along[best] < R::ONE) {
-        let adjacent = match along[best] > R::ZERO {
-            true if best + 1 >= n => 0,
-            true => best + 1,
-            false if best == 0 => n - 1,
-            false => best - 1,
-        };
-        let inside = along[adjacent % M] > R::ZERO && along[adjacent % M] < R::ONE;
-        if inside && outward[adjacent % M] > R::ZERO {
-            best = adjacent % M;
-        }
-    }
-    let t = along[best];
-    if t > R::ZERO && t < R::ONE {
-        // Across the edge: the signed distance to its line.
-        let length = ee[best].sqrt();
-        let normal = edge(best).perp_cw() * (R::ONE / length);
-        let distance = (outward[best] / length).max(R::ZERO);
-        return Some(Nearest::Outside { distance, normal, point: p - normal * distance });
-    }
-    let corner = if t > R::ZERO { to[best] } else { from[best] };
-    Some(match (p - corner).try_length_and_unit() {
-        Some((distance, normal)) => Nearest::Outside { distance, normal, point: corner },
-        // On the vertex: touching, along the deepest edge's normal.
-        None => Nearest::Outside { distance: R::ZERO, normal: unit_normal(deepest), point: corner },
-    })
+    let (distance, normal, point) = lanes.outside(p, deepest);
+    Some(Nearest::Outside { distance, normal, point })
+}
+
+/// What the distance query needs of [`nearest`]: whether `p` is strictly
+/// inside, and the answer it would have outside, computed either way. The
+/// distance query has no use for a depth (eight square roots), and one
+/// branch on whether the shapes are apart (inside, or within the radius)
+/// then decides it instead of one on each.
+#[inline(always)]
+pub(crate) fn beyond<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<(bool, R, V2<R>, V2<R>)> {
+    let lanes = Lanes::new(vertices, p)?;
+    let deepest = lanes.deepest();
+    let (distance, normal, point) = lanes.outside(p, deepest);
+    Some((lanes.outward[deepest] < R::ZERO, distance, normal, point))
 }
 
 /// Whether `p` lies within `radius` of the counter-clockwise polygon

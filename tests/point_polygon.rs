@@ -245,3 +245,61 @@ fn intersection_test_matches_the_exact_verdict() {
     run!(f32, Vec2);
     run!(f64, DVec2);
 }
+
+/// A small circle wholly inside a polygon overlaps it however far its
+/// centre is from the boundary: the distance query says `None`, on the
+/// closed form's path (types known) and on GJK's (`dyn SupportMap`), and
+/// the penetration's depth is the centre's depth plus the radius. Regular
+/// 3- to 8-gons at three scales, placed with and without rotation, the
+/// circle at the centre and at half the inradius in eight directions, as A
+/// and as B.
+#[test]
+fn circles_wholly_inside_have_no_distance() {
+    use std::f64::consts::{PI, TAU};
+    macro_rules! run {
+        ($r:ty, $vec:ident) => {{
+            type R = $r;
+            let gjk = Gjk::<R>::new();
+            let eps = R::EPSILON as f64;
+            for n in 3..=8usize {
+                for scale in [1e-3, 1.0, 1e3] {
+                    let polygon = Polygon::<R, 8>::regular(n, scale as R).unwrap();
+                    let inradius = scale * (PI / n as f64).cos();
+                    let radius = 0.05 * inradius;
+                    for placement in [Transform::<R>::IDENTITY, Transform::new($vec::new(3.0, -2.0), 0.7).unwrap()] {
+                        for k in 0..9 {
+                            let (reach, t) = if k == 0 { (0.0, 0.0) } else { (0.5 * inradius, TAU * k as f64 / 8.0) };
+                            let local = $vec::new((reach * t.cos()) as R, (reach * t.sin()) as R);
+                            let circle = Circle::<R>::at(local, radius as R).unwrap();
+                            let (pd, cd): (&dyn SupportMap<R>, &dyn SupportMap<R>) = (&polygon, &circle);
+                            for (found, path) in [
+                                (gjk.distance(&circle, &placement, &polygon, &placement), "closed form, circle A"),
+                                (gjk.distance(&polygon, &placement, &circle, &placement), "closed form, circle B"),
+                                (gjk.distance(cd, &placement, pd, &placement), "gjk"),
+                            ] {
+                                assert!(found.is_none(), "{path}: {n}-gon at {scale}, centre {local:?}: {found:?}");
+                            }
+                            // The centre's depth: the inradius less its offset along the nearest edge's normal.
+                            let depth = (0..n)
+                                .map(|i| {
+                                    let m = TAU * (i as f64 + 0.5) / n as f64;
+                                    inradius - (reach * t.cos() * m.cos() + reach * t.sin() * m.sin())
+                                })
+                                .fold(f64::MAX, f64::min);
+                            let pen = gjk.penetration(&circle, &placement, &polygon, &placement).expect("overlap");
+                            let bound = 64.0 * eps * (scale + 5.0);
+                            assert!(
+                                (pen.depth as f64 - (depth + radius)).abs() <= bound,
+                                "{n}-gon at {scale}, centre {local:?}: depth {} against {}",
+                                pen.depth,
+                                depth + radius
+                            );
+                        }
+                    }
+                }
+            }
+        }};
+    }
+    run!(f32, Vec2);
+    run!(f64, DVec2);
+}
