@@ -154,7 +154,7 @@ impl<R: Real, P> Gjk<R, P> {
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
             if let Some(beyond) = crate::point_polygon::beyond(polygon, p) {
-                return point_outside_polygon_separation(pair, beyond, point_is_a);
+                return point_polygon_separation(pair, beyond, point_is_a);
             }
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -385,8 +385,10 @@ impl<R: Real, P> Gjk<R, P> {
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
             if let Some(near) = crate::point_polygon::nearest(polygon, p) {
-                if let Some(s) = point_polygon_separation(&pair, near, point_is_a) {
-                    return Some(apart(s));
+                if let crate::point_polygon::Nearest::Outside { distance, normal, point } = near {
+                    if let Some(s) = point_polygon_separation(&pair, (false, distance, normal, point), point_is_a) {
+                        return Some(apart(s));
+                    }
                 }
                 if P::SEPARATING_AXES {
                     return point_polygon_penetration(&pair, near, point_is_a).map(overlapping);
@@ -867,31 +869,12 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
 }
 
 /// The separation of a point core and a small polygon from the polygon's
-/// nearest feature: what GJK's loop ends with, in closed form.
+/// nearest feature ([`crate::point_polygon::beyond`]'s answer): what GJK's
+/// loop ends with, in closed form. `None` where the point core is inside
+/// or within the radii, one branch for both.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
 fn point_polygon_separation<R, A, B>(
-    pair: &Pair<'_, R, A, B>,
-    near: crate::point_polygon::Nearest<R>,
-    point_is_a: bool,
-) -> Option<Separation<R>>
-where
-    R: Real,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    let crate::point_polygon::Nearest::Outside { distance, normal, point } = near else {
-        return None;
-    };
-    point_outside_polygon_separation(pair, (false, distance, normal, point), point_is_a)
-}
-
-/// [`point_polygon_separation`] from [`crate::point_polygon::beyond`]'s
-/// answer: `None` where the point core is inside or within the radii, one
-/// branch for both.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-#[inline(always)]
-fn point_outside_polygon_separation<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     (inside, distance, normal, point): (bool, R, V2<R>, V2<R>),
     point_is_a: bool,
