@@ -44,7 +44,8 @@ mod sealed {
         /// product of eight vertices (`xs`, `ys`) with it: the
         /// separating-axis test's inner loop. Each axis folds the vertices
         /// in order, keeping the smaller (the one it has on a tie), so SIMD
-        /// lanes, where the target has them, give the scalar fold's bits.
+        /// lanes, where the target has them, give the scalar fold's values
+        /// (in f32 its bits; in f64 a zero's sign may differ).
         #[inline(always)]
         fn least_dots8(nx: &[Self; 8], ny: &[Self; 8], xs: &[Self; 8], ys: &[Self; 8]) -> [Self; 8]
         where
