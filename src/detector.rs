@@ -1017,10 +1017,8 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    // What the simplex carries. On bare metal, the distance query's witness
-    // points, though penetration needs none: one copy of the GJK loop then
-    // serves both queries. Elsewhere nothing: a smaller simplex is a faster
-    // one.
+    // Witness points on bare metal, so that one GJK loop serves the distance
+    // and the penetration query; nothing elsewhere, which is faster.
     #[cfg(target_os = "none")]
     let gjk = core_gjk::<R, A, B, Witness<R>, _>(pair, max_iterations, epsilon, |core| rounded_overlap(pair, core));
     #[cfg(not(target_os = "none"))]

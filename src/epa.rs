@@ -135,12 +135,9 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     fn items_mut(&mut self) -> &mut [Corner<R>] {
         self
     }
-    // Shifted by swaps of neighbours, not `Vec::insert`: a shift between
-    // overlapping slots is a `memmove` call, which a microcontroller would
-    // link for this alone. A polytope has a few dozen corners at most; the
-    // swaps cost no more than the shift. An index past the end leaves the
-    // corner last (`move_item` stops at the end), so this needs no check of
-    // its own and is small enough to inline into EPA.
+    // Shifted by swaps of neighbours, not `Vec::insert`, whose overlapping
+    // copy would link `memmove` into a firmware for this alone. An index
+    // past the end leaves the corner last (`move_item` stops at the end).
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
         if self.push(c).is_err() {
             return false;

@@ -101,10 +101,10 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
 /// GJK's distance loop ([`Pair::core_distance`]) from a simplex of the
 /// caller's, if given (a warm start: the last step's simplex, its points
 /// measured again), else from the first support. The simplex lives in the
-/// caller's `slot` (pass `None`), started here and reduced in place, so it
-/// is never copied (a `memcpy` on bare metal). Any points of the Minkowski difference will do: the
-/// loop ends on the same criteria, so its answers keep their guarantees
-/// however it starts.
+/// caller's `slot` (pass `None`), started here and reduced in place, never
+/// copied. Any points of the Minkowski difference will do: the loop ends on
+/// the same criteria, so its answers keep their guarantees however it
+/// starts.
 #[inline(always)]
 pub(crate) fn distance_loop_from<'s, R, A, B, P>(
     pair: &Pair<'_, R, A, B>,

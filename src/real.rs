@@ -14,10 +14,8 @@ mod sealed {
     /// through [`per_type`](Self::per_type).
     pub trait Sealed {
         /// Whether GJK runs in few, flat frames (its loop inlined into each
-        /// query, its simplex solve one function): f64 on bare metal only,
-        /// where every frame saves wide soft-float registers, so fewer
-        /// frames are less stack; elsewhere the shared functions are the
-        /// smaller code.
+        /// query): f64 on bare metal only, where every frame saves wide
+        /// soft-float registers.
         const FLAT_GJK: bool;
 
         /// Whether [`first_max_dot`](Self::first_max_dot) scans in SIMD,

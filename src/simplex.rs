@@ -175,11 +175,9 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
     /// point's weights `first / sum` (for `i`) and `second / sum` (for `j`).
     #[inline(always)]
     fn keep_edge(&mut self, (i, j): (usize, usize), Weights { first, second, sum }: Weights<R>) {
-        // The vertex left out gets the third's place: one copy, from a
-        // constant slot (a copy between slots the compiler cannot tell apart
-        // becomes a call to `memmove`, which a firmware would link for this
-        // alone). The edge may come out reversed, which nothing downstream
-        // minds.
+        // The vertex left out gets the third's place, copied from a constant
+        // slot so that no `memmove` is linked; the edge may come out
+        // reversed, which nothing downstream minds.
         let (slot_0, slot_1) = match (i, j) {
             (1, 2) => {
                 self.verts[0] = self.verts[2];

@@ -6,12 +6,10 @@
 //! with a radius, so the queries handle their curvature in closed form and
 //! spend no iterations on it: they come out as exact as polygons.
 //!
-//! On bare-metal targets a shape's support code, where it is more than a
-//! few instructions, is one function out of line, which the trait's two
-//! support methods (`support`, `support_feature`) call: inlined, each
-//! method would hold its own copy, and a firmware that reaches shapes
-//! through `dyn SupportMap` links every method of every shape. The call
-//! costs a few instructions there; hosts inline it for speed.
+//! On bare metal a shape's support code (beyond a few instructions) is one
+//! function out of line that both support methods call, so a firmware that
+//! reaches shapes through `dyn SupportMap` links one copy, not two; hosts
+//! inline it for speed.
 //!
 //! The trait has no method that no query calls through `dyn`: each one is
 //! a function per shape in every firmware that uses trait objects.
