@@ -49,7 +49,7 @@ impl<R: Real> Padded<R> {
 #[inline(always)]
 fn reach<R: Real>(own: &Padded<R>, other: &Padded<R>, n: V2<R>, i: usize) -> R {
     let least = (0..M).fold(R::INFINITY, |least, j| lesser(n.x * other.xs[j] + n.y * other.ys[j], least));
-    least - (n.x * own.xs[i % M] + n.y * own.ys[i % M])
+    least - n.dot(own.v[i % M])
 }
 
 /// For every edge slot of `own`: the outward normal (not unit) and the least
@@ -62,7 +62,7 @@ fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
     let normals: [V2<R>; M] = core::array::from_fn(|i| own.normal(i));
     let (nx, ny) = (normals.map(|n| n.x), normals.map(|n| n.y));
     let least = R::least_dots8(&nx, &ny, &other.xs, &other.ys);
-    let least = core::array::from_fn(|i| least[i] - (nx[i] * own.xs[i] + ny[i] * own.ys[i]));
+    let least = core::array::from_fn(|i| least[i] - normals[i].dot(own.v[i]));
     (normals, least)
 }
 
