@@ -105,3 +105,65 @@ macro_rules! first_of_ties_suite {
 
 first_of_ties_suite!(scan_keeps_first_of_ties_f32, f32, Vec2);
 first_of_ties_suite!(scan_keeps_first_of_ties_f64, f64, DVec2);
+
+/// A convex polygon with collinear runs: `corners` (integers, counter-clockwise,
+/// strictly convex) with each edge cut into `cuts` equal integer steps.
+fn with_collinear_runs(corners: &[(i64, i64)], cuts: i64) -> Points {
+    let n = corners.len();
+    (0..n)
+        .flat_map(|i| {
+            let ((x0, y0), (x1, y1)) = (corners[i], corners[(i + 1) % n]);
+            (0..cuts).map(move |k| (x0 + (x1 - x0) * k / cuts, y0 + (y1 - y0) * k / cuts))
+        })
+        .collect()
+}
+
+macro_rules! collinear_runs_suite {
+    ($name:ident, $r:ty, $vec:ident) => {
+        /// A hint inside a flat run is at a top or at a bottom: the walk from
+        /// it must tell which. Every hint, along directions perpendicular to
+        /// the runs and others, against the exact integer support; capacities
+        /// that walk and search on every host.
+        #[test]
+        fn $name() {
+            let corners: [&[(i64, i64)]; 3] = [
+                &[(0, 0), (1200, 0), (1200, 1200), (0, 1200)],
+                &[(0, 0), (600, 0), (900, 300), (900, 900), (600, 1200), (0, 1200), (-300, 900), (-300, 300)],
+                &[(0, 0), (1200, 600), (0, 1200)],
+            ];
+            let directions = [(0, 1), (0, -1), (1, 0), (-1, 0), (1, 1), (-1, -1), (1, -1), (-1, 1), (2, 1), (-1, 3)];
+            let mut checked = 0;
+            for corners in corners {
+                for cuts in [3, 12, 40] {
+                    let points = with_collinear_runs(corners, cuts);
+                    let pts: Vec<$vec> = points.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
+                    let polygon = Polygon::<$r, 512>::new(&pts).unwrap();
+                    let stored: Vec<(i64, i64)> = (0..polygon.len())
+                        .map(|i| polygon.vertex(i).unwrap())
+                        .map(|v| (v.x as i64, v.y as i64))
+                        .collect();
+                    for &(dx, dy) in &directions {
+                        let d = $vec::new(dx as $r, dy as $r);
+                        let dots: Vec<i64> = stored.iter().map(|&(x, y)| x * dx + y * dy).collect();
+                        let best = *dots.iter().max().unwrap();
+                        for near in (0..stored.len() as u32).chain([NO_FEATURE]) {
+                            let (_, id) = polygon.support_feature(d, near);
+                            assert_eq!(
+                                dots[id as usize],
+                                best,
+                                "{} vertices, hint {near}: not the exact support along {:?}",
+                                stored.len(),
+                                (dx, dy)
+                            );
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+            assert!(checked > 8_000, "{checked}");
+        }
+    };
+}
+
+collinear_runs_suite!(hints_in_flat_runs_find_the_top_f32, f32, Vec2);
+collinear_runs_suite!(hints_in_flat_runs_find_the_top_f64, f64, DVec2);

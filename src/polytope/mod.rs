@@ -234,13 +234,34 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: us
     // Forward up a rising edge (the steeper way at a bottom), back where the
     // edge behind falls; then on that way while the next edge rises (not
     // rising, NaN too: the top).
-    let forward = ahead > R::ZERO && ahead >= -behind;
+    let mut forward = ahead > R::ZERO && ahead >= -behind;
     let backward = behind < R::ZERO;
-    if !forward && !backward {
+    let mut steps = max_steps;
+    if ahead == R::ZERO && behind == R::ZERO {
+        // Inside a run of edges perpendicular to `d`, at the top or at the
+        // bottom: the first edge past the run says which. A bottom climbs on
+        // from the run's end.
+        let mut end = next(k);
+        loop {
+            if steps == 0 {
+                return (k, false);
+            }
+            steps -= 1;
+            let beyond = rise(end, next(end));
+            if beyond > R::ZERO {
+                (k, forward) = (end, true);
+                break;
+            }
+            if beyond != R::ZERO {
+                return (k, true);
+            }
+            end = next(end);
+        }
+    } else if !forward && !backward {
         return (k, true);
     }
     let step = |k: usize| if forward { next(k) } else { prev(k) };
-    for _ in 0..max_steps {
+    for _ in 0..steps {
         let j = step(k);
         let up = rise(k, j) > R::ZERO;
         if !up {
