@@ -98,20 +98,19 @@ impl<R: Real> Polygons<R> {
     }
 
     /// Axis `slot` alone (A's edges first, then B's, as in [`Axes`]): its
-    /// normal from A towards B (not unit) and the least reach along it,
-    /// computed as [`Axes::new`] computes them, to the bit. `None` for a
-    /// slot past either polygon's last edge.
+    /// normal from A towards B (not unit), the least reach along it,
+    /// computed as [`Axes::new`] computes them, to the bit, and whether the
+    /// slot has an edge (one past either polygon's last edge is measured on
+    /// some edge and flagged). No branch on the slot, which differs from pair
+    /// to pair: both polygons' parts are picked by selects.
     #[inline(always)]
-    pub fn axis(&self, slot: usize) -> Option<(V2<R>, R)> {
-        if slot < self.a.len {
-            let n = self.a.normal(slot);
-            Some((n, reach(&self.a, &self.b, n, slot)))
-        } else if slot >= M && slot - M < self.b.len {
-            let n = self.b.normal(slot - M);
-            Some((-n, reach(&self.b, &self.a, n, slot - M)))
-        } else {
-            None
-        }
+    pub fn axis(&self, slot: usize) -> (V2<R>, R, bool) {
+        let of_a = slot < M;
+        let (own, other) = core::hint::select_unpredictable(of_a, (&self.a, &self.b), (&self.b, &self.a));
+        let edge = slot % M;
+        let n = own.normal(edge);
+        let least = reach(own, other, n, edge);
+        (core::hint::select_unpredictable(of_a, n, -n), least, edge < own.len && slot < 2 * M)
     }
 }
 

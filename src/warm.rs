@@ -118,6 +118,7 @@ mod small {
 
     use super::PairCache;
     use crate::minkowski::{MinkowskiVertex, Pair, NO_ID};
+    use crate::polytope::first_max;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
     use crate::sat::{penetration_along, scaled_separation, separates_by, Axes, Polygons};
@@ -156,10 +157,14 @@ mod small {
         const MIX_Y: u64 = 0xA076_1D64_78BD_642F;
         let mut sum = ((a.len() as u64) << 32 | b.len() as u64).wrapping_mul(MIX_X);
         let mut salt = SALT;
-        for v in a.iter().chain(b) {
-            let (x, y) = (v.x.to_f64().to_bits(), v.y.to_f64().to_bits());
-            sum = sum.wrapping_add((x ^ salt).wrapping_mul(MIX_X)).wrapping_add((y ^ salt).wrapping_mul(MIX_Y));
-            salt = salt.wrapping_add(SALT);
+        // A loop for each polygon: a chain of the two is a branch where it
+        // switches, mispredicted as the lengths differ from pair to pair.
+        for polygon in [a, b] {
+            for v in polygon {
+                let (x, y) = (v.x.to_f64().to_bits(), v.y.to_f64().to_bits());
+                sum = sum.wrapping_add((x ^ salt).wrapping_mul(MIX_X)).wrapping_add((y ^ salt).wrapping_mul(MIX_Y));
+                salt = salt.wrapping_add(SALT);
+            }
         }
         (sum ^ (sum >> 32)).wrapping_mul(MIX_X)
     }
@@ -320,25 +325,32 @@ mod small {
         /// The penetration by the leading axes alone, as [`Axes`] would
         /// give it from every axis: the first greatest separation among
         /// them (`None` for a leader that separates, or a slot out of range).
+        /// Always [`LEADERS`] axes, fewer leaders repeating the first, and
+        /// the first greatest picked by selects: how many lead and which
+        /// wins differ from pair to pair, and branches on them were
+        /// mispredicted several times a query.
         fn by_leaders(&mut self, polygons: &Polygons<R>, leaders: u32) -> Option<Option<(R, V2<R>)>> {
-            let mut best: Option<(R, V2<R>)> = None;
             // Set bits in ascending order: ties go to the first, as in `Axes`.
+            let first = leaders.trailing_zeros() as usize;
             let mut rest = leaders;
-            while rest != 0 {
-                let slot = rest.trailing_zeros() as usize;
-                rest &= rest - 1;
-                let (normal, least) = polygons.axis(slot)?;
-                if least > R::ZERO {
-                    // It separates now: so would the cold query say.
-                    (self.separating, self.leaders) = (slot as u32, 0);
-                    return Some(None);
-                }
-                let s = scaled_separation(normal, least);
-                if best.is_none_or(|(b, _)| s > b) {
-                    best = Some((s, normal));
-                }
+            let slots: [usize; LEADERS] = core::array::from_fn(|_| {
+                let slot = core::hint::select_unpredictable(rest == 0, first, rest.trailing_zeros() as usize);
+                rest &= rest.wrapping_sub(1);
+                slot
+            });
+            let axes = slots.map(|slot| polygons.axis(slot));
+            if !axes.iter().all(|axis| axis.2) {
+                return None;
             }
-            best.map(|(s, normal)| Some(penetration_along(s, normal)))
+            // A leader that separates now: so would the cold query say.
+            let apart: [R; LEADERS] = axes.map(|axis| if axis.1 > R::ZERO { R::ONE } else { R::ZERO });
+            if apart.iter().any(|&a| a > R::ZERO) {
+                (self.separating, self.leaders) = (slots[first_max(&apart)] as u32, 0);
+                return Some(None);
+            }
+            let separation = axes.map(|(normal, least, _)| scaled_separation(normal, least));
+            let best = first_max(&separation);
+            Some(Some(penetration_along(separation[best], axes[best].0)))
         }
 
         /// The penetration of two small polygons (`None`: apart), as the
@@ -363,7 +375,8 @@ mod small {
                 iterations,
                 status: Status::Converged,
             };
-            if polygons.axis(self.separating as usize).is_some_and(|(_, least)| least > R::ZERO) {
+            let (_, least, exists) = polygons.axis(self.separating as usize);
+            if exists & (least > R::ZERO) {
                 return None;
             }
             if let Some(leaders) = self.leaders_hold(pair, a, b) {
