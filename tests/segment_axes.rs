@@ -10,7 +10,10 @@
 //! size. Every verdict beyond 8 eps L must be right, every depth within
 //! 8 eps L (plus the placement's rounding) of the exact one, and the normal
 //! must give that depth. The same pairs through `dyn SupportMap` (GJK and
-//! EPA) must agree with them.
+//! EPA) must agree with them. The distance of the same pairs, both ways,
+//! must be within the bound (and its error bound) of the exact distance,
+//! its normal must part the shapes by it and its points lie that far apart
+//! along it.
 
 #[path = "common/geo.rs"]
 mod geo;
@@ -94,12 +97,19 @@ macro_rules! segment_suite {
 
                 let gjk = Gjk::<R>::new();
                 let dynamic: &dyn SupportMap<R> = &polygon;
-                let (fast, slow) = match (&capsule, segment_is_a) {
-                    (Some(c), true) => (gjk.intersects(c, &t_segment, &polygon, &t_polygon), gjk.intersects(rounded, &t_segment, dynamic, &t_polygon)),
-                    (Some(c), false) => (gjk.intersects(&polygon, &t_polygon, c, &t_segment), gjk.intersects(dynamic, &t_polygon, rounded, &t_segment)),
-                    (None, true) => (gjk.intersects(&segment, &t_segment, &polygon, &t_polygon), gjk.intersects(rounded, &t_segment, dynamic, &t_polygon)),
-                    (None, false) => (gjk.intersects(&polygon, &t_polygon, &segment, &t_segment), gjk.intersects(dynamic, &t_polygon, rounded, &t_segment)),
-                };
+                // A query of the known types (fast paths on hosts) and the
+                // same through `dyn SupportMap`, the segment A or B.
+                macro_rules! both {
+                    ($query:ident) => {
+                        match (&capsule, segment_is_a) {
+                            (Some(c), true) => (gjk.$query(c, &t_segment, &polygon, &t_polygon), gjk.$query(rounded, &t_segment, dynamic, &t_polygon)),
+                            (Some(c), false) => (gjk.$query(&polygon, &t_polygon, c, &t_segment), gjk.$query(dynamic, &t_polygon, rounded, &t_segment)),
+                            (None, true) => (gjk.$query(&segment, &t_segment, &polygon, &t_polygon), gjk.$query(rounded, &t_segment, dynamic, &t_polygon)),
+                            (None, false) => (gjk.$query(&polygon, &t_polygon, &segment, &t_segment), gjk.$query(dynamic, &t_polygon, rounded, &t_segment)),
+                        }
+                    };
+                }
+                let (fast, slow) = both!(intersects);
                 for (det, path) in [(fast, "axes"), (slow, "gjk")] {
                     if truth.signed_distance > bound {
                         prop_assert!(!det.intersecting, "{path}: says overlap, exact distance {}", truth.signed_distance);
@@ -108,12 +118,7 @@ macro_rules! segment_suite {
                         prop_assert!(det.intersecting, "{path}: says apart, exact depth {}", -truth.signed_distance);
                     }
                 }
-                let (fast, slow) = match (&capsule, segment_is_a) {
-                    (Some(c), true) => (gjk.penetration(c, &t_segment, &polygon, &t_polygon), gjk.penetration(rounded, &t_segment, dynamic, &t_polygon)),
-                    (Some(c), false) => (gjk.penetration(&polygon, &t_polygon, c, &t_segment), gjk.penetration(dynamic, &t_polygon, rounded, &t_segment)),
-                    (None, true) => (gjk.penetration(&segment, &t_segment, &polygon, &t_polygon), gjk.penetration(rounded, &t_segment, dynamic, &t_polygon)),
-                    (None, false) => (gjk.penetration(&polygon, &t_polygon, &segment, &t_segment), gjk.penetration(dynamic, &t_polygon, rounded, &t_segment)),
-                };
+                let (fast, slow) = both!(penetration);
                 let (wa, wb, ra, rb) = if segment_is_a { (&ws[..], &wp[..], radius, 0.0) } else { (&wp[..], &ws[..], 0.0, radius) };
                 for (pen, path) in [(fast, "axes"), (slow, "epa")] {
                     let answer = pen.map(|p| (p.depth as f64, [p.normal.x as f64, p.normal.y as f64], p.status.is_converged()));
@@ -122,6 +127,26 @@ macro_rules! segment_suite {
                 }
                 if let (Some(f), Some(s)) = (fast, slow) {
                     prop_assert!((f.depth as f64 - s.depth as f64).abs() <= 2.0 * bound);
+                }
+                let (fast, slow) = both!(distance);
+                for (separation, path) in [(fast, "known types"), (slow, "dyn")] {
+                    let Some(sep) = separation else {
+                        prop_assert!(truth.signed_distance <= bound, "{path}: no distance, exact {}", truth.signed_distance);
+                        continue;
+                    };
+                    let (got, allowed) = (sep.distance as f64, bound + sep.error_bound as f64);
+                    prop_assert!(truth.signed_distance >= -bound, "{path}: distance {got}, exact depth {}", -truth.signed_distance);
+                    prop_assert!((got - truth.signed_distance).abs() <= allowed, "{path}: distance {got}, exact {}, bound {allowed}", truth.signed_distance);
+                    // The normal parts them by the distance, and the points
+                    // lie that far apart along it.
+                    let n = [sep.normal.x as f64, sep.normal.y as f64];
+                    let gap = -reach(wb, rb, [-n[0], -n[1]]) - reach(wa, ra, n);
+                    prop_assert!((gap - got).abs() <= 2.0 * allowed, "{path}: gap {gap} along the normal, distance {got}");
+                    // World points round at the scale of where they are.
+                    let (pa, pb) = (sep.point_a, sep.point_b);
+                    let where_ = 4.0 * eps * (pa.x.abs() + pa.y.abs()) as f64;
+                    let apart = [pb.x as f64 - pa.x as f64 - got * n[0], pb.y as f64 - pa.y as f64 - got * n[1]];
+                    prop_assert!(apart[0].hypot(apart[1]) <= 4.0 * allowed + where_, "{path}: points {:?} {:?}, distance {got}", pa, pb);
                 }
             }
         }
