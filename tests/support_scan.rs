@@ -167,3 +167,42 @@ macro_rules! collinear_runs_suite {
 
 collinear_runs_suite!(hints_in_flat_runs_find_the_top_f32, f32, Vec2);
 collinear_runs_suite!(hints_in_flat_runs_find_the_top_f64, f64, DVec2);
+
+macro_rules! dense_hull_suite {
+    ($name:ident, $r:ty, $vec:ident) => {
+        proptest! {
+            #![proptest_config(ProptestConfig::with_cases(60))]
+            /// Hulls of hundreds of integer points near a circle: long runs
+            /// of nearly parallel edges, which the walks and the angular
+            /// search of large polygons (more than 64 vertices on x86-64,
+            /// 24 elsewhere) go along. Every third vertex as a hint, and
+            /// none, along integer directions, against the exact support.
+            #[test]
+            fn $name(
+                points in prop::collection::vec((0.0f64..std::f64::consts::TAU, 0.995f64..1.0), 400..2000),
+                dirs in prop::collection::vec((-9i64..=9, -9i64..=9), 1..12),
+            ) {
+                let hull = geo::integer_hull(
+                    points.iter().map(|&(t, r)| ((3000.0 * r * t.cos()) as i64, (3000.0 * r * t.sin()) as i64)).collect(),
+                );
+                prop_assume!(hull.len() > 64);
+                let pts: Vec<$vec> = hull.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
+                let polygon = Polygon::<$r, 1024>::new(&pts).unwrap();
+                let stored: Vec<(i64, i64)> =
+                    (0..polygon.len()).map(|i| polygon.vertex(i).unwrap()).map(|v| (v.x as i64, v.y as i64)).collect();
+                for &(dx, dy) in dirs.iter().filter(|&&d| d != (0, 0)) {
+                    let d = $vec::new(dx as $r, dy as $r);
+                    let dots: Vec<i64> = stored.iter().map(|&(x, y)| x * dx + y * dy).collect();
+                    let best = *dots.iter().max().unwrap();
+                    for near in (0..stored.len() as u32).step_by(3).chain([NO_FEATURE]) {
+                        let (_, id) = polygon.support_feature(d, near);
+                        prop_assert_eq!(dots[id as usize], best, "{} vertices, hint {}: not the exact support along {:?}", stored.len(), near, (dx, dy));
+                    }
+                }
+            }
+        }
+    };
+}
+
+dense_hull_suite!(dense_hulls_hinted_f32, f32, Vec2);
+dense_hull_suite!(dense_hulls_hinted_f64, f64, DVec2);
