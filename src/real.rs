@@ -58,6 +58,13 @@ mod sealed {
             least
         }
 
+        /// A point's coordinates as one 64-bit word for a fingerprint: both
+        /// bit patterns side by side in f32; in f64 the second turned by 29
+        /// bits onto the first.
+        fn point_bits(x: Self, y: Self) -> u64
+        where
+            Self: Sized;
+
         /// `W`'s work for this type: [`PerType::f32`](super::PerType::f32)
         /// or [`PerType::f64`](super::PerType::f64).
         fn per_type<W: super::PerType>(input: W::Input<'_, Self>) -> W::Output<Self>
@@ -66,6 +73,10 @@ mod sealed {
     }
     impl Sealed for f32 {
         const FLAT_GJK: bool = false;
+        #[inline(always)]
+        fn point_bits(x: f32, y: f32) -> u64 {
+            (u64::from(x.to_bits()) << 32) | u64::from(y.to_bits())
+        }
         #[inline(always)]
         fn per_type<W: super::PerType>(input: W::Input<'_, f32>) -> W::Output<f32> {
             W::f32(input)
@@ -88,6 +99,10 @@ mod sealed {
     }
     impl Sealed for f64 {
         const FLAT_GJK: bool = cfg!(target_os = "none");
+        #[inline(always)]
+        fn point_bits(x: f64, y: f64) -> u64 {
+            x.to_bits() ^ y.to_bits().rotate_left(29)
+        }
         #[inline(always)]
         fn per_type<W: super::PerType>(input: W::Input<'_, f64>) -> W::Output<f64> {
             W::f64(input)

@@ -149,24 +149,24 @@ mod small {
     }
 
     /// Both polygons' vertex counts and coordinates, mixed into 64 bits:
-    /// each coordinate's bits salted by its place and multiplied by an odd
-    /// constant (independent products, no chain), then summed.
+    /// each point's bits (one word, `point_bits`) salted by its place and
+    /// multiplied by an odd constant (independent products, no chain), then
+    /// summed. A product a point, not a coordinate: every cached
+    /// penetration takes the fingerprint.
     fn fingerprint<R: Real>(a: &[V2<R>], b: &[V2<R>]) -> u64 {
         const SALT: u64 = 0x9E37_79B9_7F4A_7C15;
-        const MIX_X: u64 = 0xD6E8_FEB8_6659_FD93;
-        const MIX_Y: u64 = 0xA076_1D64_78BD_642F;
-        let mut sum = ((a.len() as u64) << 32 | b.len() as u64).wrapping_mul(MIX_X);
+        const MIX: u64 = 0xD6E8_FEB8_6659_FD93;
+        let mut sum = ((a.len() as u64) << 32 | b.len() as u64).wrapping_mul(MIX);
         let mut salt = SALT;
         // A loop for each polygon: a chain of the two is a branch where it
         // switches, mispredicted as the lengths differ from pair to pair.
         for polygon in [a, b] {
             for v in polygon {
-                let (x, y) = (v.x.to_f64().to_bits(), v.y.to_f64().to_bits());
-                sum = sum.wrapping_add((x ^ salt).wrapping_mul(MIX_X)).wrapping_add((y ^ salt).wrapping_mul(MIX_Y));
+                sum = sum.wrapping_add((R::point_bits(v.x, v.y) ^ salt).wrapping_mul(MIX));
                 salt = salt.wrapping_add(SALT);
             }
         }
-        (sum ^ (sum >> 32)).wrapping_mul(MIX_X)
+        (sum ^ (sum >> 32)).wrapping_mul(MIX)
     }
 
     /// Whether triangle `w` encloses the origin by more than `margin`
