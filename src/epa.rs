@@ -43,9 +43,9 @@ pub trait PenetrationSolver<R: Real> {
 }
 
 /// The expanding polytope algorithm with room for `N` polytope vertices on
-/// the stack (default 32; a larger `N` is more stack). A full polytope merges away the corner that matters least (one
-/// that no longer can, where there is one); when none can go the answer says
-/// `Status::CapacityLimit`.
+/// the stack (default 32; a larger `N` is more stack). A full polytope
+/// merges away the corner that matters least (one that no longer can, where
+/// there is one); when none can go the answer says `Status::CapacityLimit`.
 ///
 /// `N` is at least 3 (a triangle around the origin), checked when the
 /// program is compiled:

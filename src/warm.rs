@@ -342,10 +342,10 @@ mod small {
             if !axes.iter().all(|axis| axis.2) {
                 return None;
             }
-            // A leader that separates now: so would the cold query say.
-            let apart: [R; LEADERS] = axes.map(|axis| if axis.1 > R::ZERO { R::ONE } else { R::ZERO });
-            if apart.iter().any(|&a| a > R::ZERO) {
-                (self.separating, self.leaders) = (slots[first_max(&apart)] as u32, 0);
+            // A leader that separates now (seldom, so a predictable branch):
+            // so would the cold query say.
+            if let Some(k) = axes.iter().position(|axis| axis.1 > R::ZERO) {
+                (self.separating, self.leaders) = (slots[k] as u32, 0);
                 return Some(None);
             }
             let separation = axes.map(|(normal, least, _)| scaled_separation(normal, least));

@@ -18,6 +18,21 @@ use proptest::prelude::*;
 /// every dot product below is exact in i64.
 type Points = Vec<(i64, i64)>;
 
+/// A polygon's vertices as it stores them, as integers (exact: the inputs
+/// are integers).
+macro_rules! stored {
+    ($polygon:expr) => {
+        (0..$polygon.len()).map(|i| $polygon.vertex(i).unwrap()).map(|v| (v.x as i64, v.y as i64)).collect::<Points>()
+    };
+}
+
+/// Each point's dot product with `(dx, dy)`, exact in i64, and the largest.
+fn dots_and_top(points: &[(i64, i64)], (dx, dy): (i64, i64)) -> (Vec<i64>, i64) {
+    let dots: Vec<i64> = points.iter().map(|&(x, y)| x * dx + y * dy).collect();
+    let top = dots.iter().copied().max().unwrap_or(i64::MIN);
+    (dots, top)
+}
+
 fn hull_and_directions(max_vertices: usize) -> impl Strategy<Value = (Points, Points)> {
     // Scattered points give few hull vertices; points near a circle, many.
     let scattered = prop::collection::vec((-40i64..=40, -40i64..=40), 3..24);
@@ -79,12 +94,10 @@ macro_rules! first_of_ties_suite {
             fn $name((hull, dirs) in hull_and_directions(64)) {
                 let pts: Vec<$vec> = hull.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
                 let polygon = Polygon::<$r, 64>::new(&pts).unwrap();
-                let stored: Vec<(i64, i64)> =
-                    (0..polygon.len()).map(|i| polygon.vertex(i).unwrap()).map(|v| (v.x as i64, v.y as i64)).collect();
+                let stored = stored!(polygon);
                 for &(dx, dy) in &dirs {
                     let d = $vec::new(dx as $r, dy as $r);
-                    let dots: Vec<i64> = stored.iter().map(|&(x, y)| x * dx + y * dy).collect();
-                    let best = *dots.iter().max().unwrap();
+                    let (dots, best) = dots_and_top(&stored, (dx, dy));
                     let first = dots.iter().position(|&x| x == best).unwrap();
                     let (_, id) = polygon.support_feature(d, NO_FEATURE);
                     prop_assert_eq!(dots[id as usize], best, "not the exact support along {:?}", d);
@@ -138,14 +151,10 @@ macro_rules! collinear_runs_suite {
                     let points = with_collinear_runs(corners, cuts);
                     let pts: Vec<$vec> = points.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
                     let polygon = Polygon::<$r, 512>::new(&pts).unwrap();
-                    let stored: Vec<(i64, i64)> = (0..polygon.len())
-                        .map(|i| polygon.vertex(i).unwrap())
-                        .map(|v| (v.x as i64, v.y as i64))
-                        .collect();
+                    let stored = stored!(polygon);
                     for &(dx, dy) in &directions {
                         let d = $vec::new(dx as $r, dy as $r);
-                        let dots: Vec<i64> = stored.iter().map(|&(x, y)| x * dx + y * dy).collect();
-                        let best = *dots.iter().max().unwrap();
+                        let (dots, best) = dots_and_top(&stored, (dx, dy));
                         for near in (0..stored.len() as u32).chain([NO_FEATURE]) {
                             let (_, id) = polygon.support_feature(d, near);
                             assert_eq!(
@@ -188,12 +197,10 @@ macro_rules! dense_hull_suite {
                 prop_assume!(hull.len() > 64);
                 let pts: Vec<$vec> = hull.iter().map(|&(x, y)| $vec::new(x as $r, y as $r)).collect();
                 let polygon = Polygon::<$r, 1024>::new(&pts).unwrap();
-                let stored: Vec<(i64, i64)> =
-                    (0..polygon.len()).map(|i| polygon.vertex(i).unwrap()).map(|v| (v.x as i64, v.y as i64)).collect();
+                let stored = stored!(polygon);
                 for &(dx, dy) in dirs.iter().filter(|&&d| d != (0, 0)) {
                     let d = $vec::new(dx as $r, dy as $r);
-                    let dots: Vec<i64> = stored.iter().map(|&(x, y)| x * dx + y * dy).collect();
-                    let best = *dots.iter().max().unwrap();
+                    let (dots, best) = dots_and_top(&stored, (dx, dy));
                     for near in (0..stored.len() as u32).step_by(3).chain([NO_FEATURE]) {
                         let (_, id) = polygon.support_feature(d, near);
                         prop_assert_eq!(dots[id as usize], best, "{} vertices, hint {}: not the exact support along {:?}", stored.len(), near, (dx, dy));
