@@ -19,6 +19,8 @@ use crate::result::{Detection, FeatureId, Manifold, Penetration, RayCast, RayHit
 use crate::shape::SupportMap;
 use crate::simplex::{Payload, Simplex, Witness};
 use crate::transform::Transform;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::walked_axes::Walked;
 use crate::warm::PairCache;
 
 /// The narrow-phase detector: configuration plus a penetration solver (EPA
@@ -218,6 +220,15 @@ impl<R: Real, P> Gjk<R, P> {
                 let (depth, normal) = axes.penetration();
                 return Some(separating_axes_penetration(pair, depth, normal));
             }
+            if let Some((pa, pb)) = pair.polygon_cores() {
+                match crate::walked_axes::penetration(pair, pa, pb) {
+                    Some(Walked::Apart) => return None,
+                    Some(Walked::Overlapping(depth, normal)) => {
+                        return Some(separating_axes_penetration(pair, depth, normal))
+                    }
+                    None => {}
+                }
+            }
             if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(pair) {
                 match rounded_axes(pair, axes) {
                     RoundedAxes::Overlapping(depth, normal) => {
@@ -404,6 +415,14 @@ impl<R: Real, P> Gjk<R, P> {
                     if let Some((pa, pb)) = pair.small_polygons() {
                         let (depth, normal) = crate::sat::Axes::new(&pair, pa, pb).penetration();
                         return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                    }
+                    // GJK found the cores overlapping: axes that say apart
+                    // (touching, to rounding) leave the answer to EPA.
+                    if let Some((pa, pb)) = pair.polygon_cores() {
+                        if let Some(Walked::Overlapping(depth, normal)) = crate::walked_axes::penetration(&pair, pa, pb)
+                        {
+                            return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                        }
                     }
                     if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
                         if let RoundedAxes::Overlapping(depth, normal) = rounded_axes(&pair, axes) {

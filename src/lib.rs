@@ -73,6 +73,8 @@ pub mod shape;
 mod simplex;
 mod transform;
 mod trig;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod walked_axes;
 mod warm;
 
 #[cfg(feature = "std")]

@@ -250,6 +250,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some((a.small_polygon()?.vertices, b.small_polygon()?.vertices))
     }
 
+    /// The two cores as polygons of any size ([`SupportMap::polygon_core`]),
+    /// where both shapes' types are known when the program is compiled.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn polygon_cores(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
+        if !Self::shapes_known() {
+            return None;
+        }
+        let (a, b): (&'s A, &'s B) = (self.a, self.b);
+        Some((a.polygon_core()?.vertices, b.polygon_core()?.vertices))
+    }
+
     /// A segment core (a capsule's, a segment's) and a small polygon, where
     /// both shapes' types are known when the program is compiled: the
     /// segment's end points in its own frame, the polygon's vertices, and

@@ -1,10 +1,12 @@
 //! Two polygons of at most eight vertices whose types are known when the
 //! program is compiled are answered by their separating axes on hosts (the
-//! intersection test, and penetration with EPA as the solver). Checked here
-//! against the exact oracle, as the GJK and EPA path is in tests/properties.rs:
-//! random convex polygons of 3 to 8 vertices at scales from 1e-13 to 1e4, near
-//! the origin and far from it, placed with and without rotation, about half
-//! of them overlapping and many touching. Every verdict beyond 8 eps L must
+//! intersection test, and penetration with EPA as the solver); up to 64
+//! vertices, penetration walks them. Checked here against the exact oracle,
+//! as the GJK and EPA path is in tests/properties.rs: random convex polygons
+//! of 3 to 8 vertices, and of 9 to 64 (near an ellipse, many edges nearly
+//! parallel, some vertices exactly on an edge between two others), at
+//! scales from 1e-13 to 1e4, near the origin and far from it, placed with
+//! and without rotation, about half of them overlapping and many touching. Every verdict beyond 8 eps L must
 //! be right, every depth within 8 eps L (plus the placement's rounding) of
 //! the exact one, and the normal must give that depth: the overlap of the
 //! two placed polygons along it equals the depth. The same pairs through
@@ -19,6 +21,33 @@ mod small_polygon;
 use penetration_check::{check_penetration, reach};
 use small_polygon::{polygon, Spec};
 
+/// 9 to 64 vertices: the integer hull of points near an ellipse of radius
+/// 1000 (so neighbouring edges are nearly parallel), with the midpoints of
+/// some edges added where they are integer points (vertices exactly
+/// collinear with their neighbours), at scales 2^-40 to 2^13.
+fn medium_polygon() -> impl Strategy<Value = Spec> {
+    let points = prop::collection::vec((0.0f64..std::f64::consts::TAU, -40i64..=40), 12..90);
+    let splits = prop::collection::vec(prop::bool::weighted(0.3), 64);
+    (points, splits, 0.3f64..1.0, -40i32..=13)
+        .prop_map(|(points, splits, aspect, scale_exp)| {
+            let near = points.iter().map(|&(t, r)| {
+                let radius = (1000 + r) as f64;
+                ((radius * t.cos()).round() as i64, (radius * aspect * t.sin()).round() as i64)
+            });
+            let hull = geo::integer_hull(near.collect());
+            let mut split = Vec::new();
+            for (k, &p) in hull.iter().enumerate() {
+                let q = hull[(k + 1) % hull.len()];
+                split.push(p);
+                if splits[k % splits.len()] && (p.0 + q.0) % 2 == 0 && (p.1 + q.1) % 2 == 0 {
+                    split.push(((p.0 + q.0) / 2, (p.1 + q.1) / 2));
+                }
+            }
+            Spec { hull: split, scale_exp }
+        })
+        .prop_filter("9 to 64 vertices", |s| (9..=64).contains(&s.hull.len()))
+}
+
 use gjk2d::glam::{DVec2, Vec2};
 use gjk2d::{Gjk, Polygon, SupportMap, Transform};
 use gjk2d_oracle::{pair, transform_shape, Shape};
@@ -32,12 +61,14 @@ fn placement() -> impl Strategy<Value = (i64, i64, Option<f64>, bool)> {
     (-30i64..=30, -30i64..=30, prop::option::of(0.0f64..6.3), prop::bool::ANY)
 }
 
+/// `$polygon` generates the shapes, of at most `$capacity` vertices, and
+/// `$spread` scales the placement's shift to their size.
 macro_rules! sat_suite {
-    ($name:ident, $r:ty, $vec:ident) => {
+    ($name:ident, $r:ty, $vec:ident, $polygon:expr, $capacity:literal, $spread:literal, $cases:literal) => {
         proptest! {
-            #![proptest_config(ProptestConfig::with_cases(3000))]
+            #![proptest_config(ProptestConfig::with_cases($cases))]
             #[test]
-            fn $name(a in polygon(), b in polygon(), (sx, sy, angle, far) in placement()) {
+            fn $name(a in $polygon, b in $polygon, (sx, sy, angle, far) in placement()) {
                 type R = $r;
                 let eps = R::EPSILON as f64;
                 // Both at A's scale, so they meet; B's own scale only sets its
@@ -48,11 +79,11 @@ macro_rules! sat_suite {
                 let pts = |s: &Spec, k: f64| -> Vec<Pt> { s.hull.iter().map(|&(x, y)| [x as f64 * k, y as f64 * k]).collect() };
                 let (pa, pb) = (pts(&a, scale), pts(&b, b_scale));
                 let v = |p: Pt| $vec::new(p[0] as R, p[1] as R);
-                let poly_a = Polygon::<R, 8>::new(&pa.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
+                let poly_a = Polygon::<R, $capacity>::new(&pa.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
                 // B of a larger capacity: the axes take polygons by their vertex count.
-                let poly_b = Polygon::<R, 16>::new(&pb.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
+                let poly_b = Polygon::<R, { 2 * $capacity }>::new(&pb.iter().map(|&p| v(p)).collect::<Vec<_>>()).unwrap();
                 let ta = Transform::<R>::from_translation(v(origin)).unwrap();
-                let shift = [origin[0] + sx as f64 * scale, origin[1] + sy as f64 * scale];
+                let shift = [origin[0] + (sx * $spread) as f64 * scale, origin[1] + (sy * $spread) as f64 * scale];
                 let tb = match angle {
                     Some(t) => Transform::<R>::new(v(shift), t as R).unwrap(),
                     None => Transform::<R>::from_translation(v(shift)).unwrap(),
@@ -101,8 +132,10 @@ macro_rules! sat_suite {
     };
 }
 
-sat_suite!(separating_axes_match_the_oracle_f32, f32, Vec2);
-sat_suite!(separating_axes_match_the_oracle_f64, f64, DVec2);
+sat_suite!(separating_axes_match_the_oracle_f32, f32, Vec2, polygon(), 8, 1, 3000);
+sat_suite!(separating_axes_match_the_oracle_f64, f64, DVec2, polygon(), 8, 1, 3000);
+sat_suite!(walked_axes_match_the_oracle_f32, f32, Vec2, medium_polygon(), 64, 70, 1000);
+sat_suite!(walked_axes_match_the_oracle_f64, f64, DVec2, medium_polygon(), 64, 70, 1000);
 
 macro_rules! tiny_suite {
     ($name:ident, $r:ty, $vec:ident) => {
