@@ -50,15 +50,23 @@ where
     // A's axes, then B's.
     let mut normals = [V2::zero(); 2 * WALKED_MAX];
     let mut least = [R::ZERO; 2 * WALKED_MAX];
+    let separates = |least: &[R]| least.iter().fold(false, |any, &s| any | (s > R::ZERO));
     let (normals_a, normals_b) = normals.split_at_mut(n);
     let (least_a, least_b) = least.split_at_mut(n);
-    if !(walk(a, b, normals_a, least_a) && walk(b, a, &mut normals_b[..m], &mut least_b[..m])) {
+    if !walk(a, b, normals_a, least_a) {
         return None;
     }
-    let axes = n + m;
-    if least[..axes].iter().fold(false, |any, &s| any | (s > R::ZERO)) {
+    // Apart by one of A's axes: B's need no walk.
+    if separates(least_a) {
         return Some(Walked::Apart);
     }
+    if !walk(b, a, &mut normals_b[..m], &mut least_b[..m]) {
+        return None;
+    }
+    if separates(&least_b[..m]) {
+        return Some(Walked::Apart);
+    }
+    let axes = n + m;
     let (best, top) = least_overlap(&normals[..axes], &least[..axes]);
     if !top.is_finite() {
         return None;
