@@ -1,10 +1,11 @@
 //! One family: every query, both precisions, both libraries, timed in turn.
 
 use crate::cases::{Cases, Family};
+use crate::judge::median;
 use crate::judge::{Acc, Query};
 use crate::ours::{accuracy_and_batch_g, build_family};
 use crate::parry::{parry32, parry64};
-use crate::timing::{time_interleaved, Meas};
+use crate::timing::{pass_ratio, time_interleaved, Meas};
 use gjk2d::Gjk;
 
 pub(crate) struct Row {
@@ -14,6 +15,8 @@ pub(crate) struct Row {
     pub(crate) prec: &'static str,
     pub(crate) ours: Meas,
     pub(crate) parry: Option<Meas>,
+    /// Our time over parry's, the median of the per-pass ratios.
+    pub(crate) ratio: Option<f64>,
     pub(crate) eps: f64,
 }
 
@@ -62,25 +65,26 @@ pub(crate) fn run_family<const N: usize>(f: &Family, reps: usize, rows: &mut Vec
                 None => parry_acc.push(None),
             }
         }
-        let ns = time_interleaved(n, reps, &mut batches);
+        let times = time_interleaved(n, reps, &mut batches);
         let mut k = 2;
         let mut parry = |acc: Option<Acc>| {
             acc.map(|acc| {
                 k += 1;
-                Meas { acc, ns: ns[k - 1] }
+                (Meas { acc, ns: median(times[k - 1].clone()) }, k - 1)
             })
         };
         let (p32m, p64m) = (parry(parry_acc[0].take()), parry(parry_acc[1].take()));
-        for (prec, acc, ns, parry, eps) in
-            [("f32", a32, ns[0], p32m, f32::EPSILON as f64), ("f64", a64, ns[1], p64m, f64::EPSILON)]
+        for (prec, acc, ours, parry, eps) in
+            [("f32", a32, 0, p32m, f32::EPSILON as f64), ("f64", a64, 1, p64m, f64::EPSILON)]
         {
             rows.push(Row {
                 family: f.name.clone(),
                 stiff: f.stiff,
                 query: q,
                 prec,
-                ours: Meas { acc, ns },
-                parry,
+                ours: Meas { acc, ns: median(times[ours].clone()) },
+                ratio: parry.as_ref().map(|&(_, theirs)| pass_ratio(&times[ours], &times[theirs])),
+                parry: parry.map(|(m, _)| m),
                 eps,
             });
         }

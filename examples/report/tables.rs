@@ -72,7 +72,7 @@ pub(crate) fn table_rows(rows: &[Row]) -> Vec<Vec<String>> {
                     sci(p.acc.med_err()),
                     sci(p.acc.max_nerr()),
                     format!("{:.0}", p.ns),
-                    format!("{:.2}", p.ns / o.ns),
+                    format!("{:.2}", 1.0 / r.ratio.unwrap_or(f64::NAN)),
                 ]),
                 None => v.extend([
                     "n/a (no ellipse in parry)".into(),
@@ -192,7 +192,7 @@ pub(crate) fn targets(rows: &[Row]) -> String {
         let ratio = |prec: &str| {
             rows.iter()
                 .find(|r| r.family == family && r.query == q && r.prec == prec)
-                .and_then(|r| r.parry.as_ref().map(|p| r.ours.ns / p.ns))
+                .and_then(|r| r.ratio)
                 .unwrap_or(f64::NAN)
         };
         let (a, b) = (ratio("f32"), ratio("f64"));
@@ -215,7 +215,7 @@ pub(crate) fn targets(rows: &[Row]) -> String {
     let slower: Vec<String> = rows
         .iter()
         .filter_map(|r| {
-            let x = r.ours.ns / r.parry.as_ref()?.ns;
+            let x = r.ratio?;
             (x > 1.0).then(|| format!("{} {} {} ({x:.2})", r.family, r.query.name(), r.prec))
         })
         .collect();

@@ -29,10 +29,10 @@ pub(crate) fn time_batches(n: usize, reps: usize, mut batch: impl FnMut()) -> f6
 
 /// Like [`time_batches`] for several contenders over the same `n` cases, one pass
 /// each in turn within every repeat, in an order that rotates from repeat to
-/// repeat: the median time per query of each.
-pub(crate) fn time_interleaved(n: usize, reps: usize, batches: &mut [Batch<'_>]) -> Vec<f64> {
+/// repeat: each contender's time per query, pass by pass.
+pub(crate) fn time_interleaved(n: usize, reps: usize, batches: &mut [Batch<'_>]) -> Vec<Vec<f64>> {
     if n == 0 {
-        return vec![f64::NAN; batches.len()];
+        return vec![vec![f64::NAN]; batches.len()];
     }
     for b in batches.iter_mut() {
         b();
@@ -47,7 +47,14 @@ pub(crate) fn time_interleaved(n: usize, reps: usize, batches: &mut [Batch<'_>])
             times[i].push(t.elapsed().as_nanos() as f64 / n as f64);
         }
     }
-    times.into_iter().map(median).collect()
+    times
+}
+
+/// `a / b` pass by pass, then the median: the ratio of two runs taken side by
+/// side, which a change in machine load moves less than either time (as
+/// `cargo bench --bench queries` takes it).
+pub(crate) fn pass_ratio(a: &[f64], b: &[f64]) -> f64 {
+    median(a.iter().zip(b).map(|(x, y)| x / y).collect())
 }
 
 #[derive(Clone, Debug)]
