@@ -133,7 +133,11 @@ fn walk<R: Real>(own: &[V2<R>], other: &[V2<R>], normals: &mut [V2<R>], least: &
             steps -= 1;
         }
         *slot = normal;
-        *reach = normal.dot(other[j]) - normal.dot(own[i]);
+        // The vertices' offset first: near the edge's line it is short, and
+        // its dot rounds with its own length, not with the vertices'
+        // distance from the reference point (nearly tied axes, as a polygon
+        // of many vertices has, are then told apart as EPA tells them).
+        *reach = normal.dot(other[j] - own[i]);
     }
     true
 }
