@@ -416,6 +416,14 @@ impl<R: Real, P> Gjk<R, P> {
                         let (depth, normal) = crate::sat::Axes::new(&pair, pa, pb).penetration();
                         return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
                     }
+                    // The penetration query's answer, to the bit: axes that
+                    // say apart (touching, to rounding) leave it to EPA.
+                    if let Some((pa, pb)) = pair.polygon_cores() {
+                        if let Some(Walked::Overlapping(depth, normal)) = crate::walked_axes::penetration(&pair, pa, pb)
+                        {
+                            return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                        }
+                    }
                     if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
                         if let RoundedAxes::Overlapping(depth, normal) = rounded_axes(&pair, axes) {
                             return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));

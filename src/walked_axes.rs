@@ -46,24 +46,30 @@ where
     for (slot, &p) in placed.iter_mut().zip(b) {
         *slot = pair.b_to_pair(p);
     }
-    let b = &placed[..m];
+    // B as the walks read it: in its own frame, where it is convex as its
+    // constructor checked (turned, a sliver's vertices can round into a
+    // dent, and its short edges' normals turn every way), and placed, where
+    // each reach is measured.
+    let b_own = Walking { own: b, placed: &placed[..m] };
     // A's axes, then B's.
     let mut normals = [V2::zero(); 2 * WALKED_MAX];
     let mut least = [R::ZERO; 2 * WALKED_MAX];
     let separates = |least: &[R]| least.iter().fold(false, |any, &s| any | (s > R::ZERO));
     let (normals_a, normals_b) = normals.split_at_mut(n);
     let (least_a, least_b) = least.split_at_mut(n);
-    if !walk(a, b, normals_a, least_a) {
+    let a_own = Walking { own: a, placed: a };
+    if !walk(a_own, |n| n, b_own, |n| pair.pair_vector_to_b(n), normals_a, least_a) {
         return None;
     }
     // Apart by one of A's axes: B's need no walk.
     if separates(least_a) {
         return Some(Walked::Apart);
     }
-    if !walk(b, a, &mut normals_b[..m], &mut least_b[..m]) {
+    let (normals_b, least_b) = (&mut normals_b[..m], &mut least_b[..m]);
+    if !walk(b_own, |n| pair.b_vector_to_pair(n), a_own, |n| n, normals_b, least_b) {
         return None;
     }
-    if separates(&least_b[..m]) {
+    if separates(least_b) {
         return Some(Walked::Apart);
     }
     let axes = n + m;
@@ -105,27 +111,45 @@ fn least_overlap<R: Real>(normals: &[V2<R>], least: &[R]) -> (usize, R) {
     (best, top)
 }
 
+/// A polygon walked along: its vertices in its own frame, where they are
+/// convex, and the same vertices in the pair frame.
+#[derive(Clone, Copy)]
+struct Walking<'v, R> {
+    own: &'v [V2<R>],
+    placed: &'v [V2<R>],
+}
+
 /// For every edge of `own` (counter-clockwise): its outward normal (not
-/// unit) and how far `other` reaches past the edge's line along it, times
-/// the normal's length (the least dot product of `other`'s vertices with
-/// it, from the edge), as `sat.rs` measures its axes. The normals turn
+/// unit), taken in `own`'s frame and turned into the pair frame by
+/// `to_pair`, and how far `other` reaches past the edge's line along it,
+/// times the normal's length (the least dot product of `other`'s vertices
+/// with it, from the edge), as `sat.rs` measures its axes. The normals turn
 /// counter-clockwise from edge to edge, and so does `other`'s least vertex
-/// along them: it is followed forwards, while `other`'s next edge falls
-/// along the normal, from the first normal's, found by a scan. Convexity
-/// bounds the whole walk by one turn round `other` (and rounding, on edges
-/// nearly parallel to a normal, by a vertex whose dot product ties to
-/// rounding); false where it would go on past two.
-fn walk<R: Real>(own: &[V2<R>], other: &[V2<R>], normals: &mut [V2<R>], least: &mut [R]) -> bool {
-    let (n, m) = (own.len(), other.len());
+/// along them: it is followed forwards, in `other`'s own frame (`to_other`
+/// turns a normal there), while `other`'s next edge falls along the normal,
+/// from the first normal's, found by a scan. Both polygons are read where
+/// they are convex, so convexity bounds the whole walk by one turn round
+/// `other` (and rounding, on edges nearly parallel to a normal, by a vertex
+/// whose dot product ties to rounding); false where it would go on past two.
+fn walk<R: Real>(
+    own: Walking<'_, R>,
+    to_pair: impl Fn(V2<R>) -> V2<R>,
+    other: Walking<'_, R>,
+    to_other: impl Fn(V2<R>) -> V2<R>,
+    normals: &mut [V2<R>],
+    least: &mut [R],
+) -> bool {
+    let (n, m) = (own.own.len().min(own.placed.len()), other.own.len().min(other.placed.len()));
     let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
-    let normal = |i: usize| (own[next(i, n)] - own[i]).perp_cw();
+    let normal = |i: usize| to_pair((own.own[next(i, n)] - own.own[i]).perp_cw());
     // The first of the least dots along the first normal is the first of
     // the greatest along its opposite (negation is exact).
-    let (mut j, _) = polytope_support::<R, WALKED_MAX>(other, -normal(0));
+    let (mut j, _) = polytope_support::<R, WALKED_MAX>(other.own, -to_other(normal(0)));
     let mut steps = 2 * m;
     for (i, (slot, reach)) in normals.iter_mut().zip(least.iter_mut()).enumerate().take(n) {
         let normal = normal(i);
-        while (other[next(j, m)] - other[j]).dot(normal) < R::ZERO {
+        let along = to_other(normal);
+        while (other.own[next(j, m)] - other.own[j]).dot(along) < R::ZERO {
             if steps == 0 {
                 return false;
             }
@@ -137,7 +161,7 @@ fn walk<R: Real>(own: &[V2<R>], other: &[V2<R>], normals: &mut [V2<R>], least: &
         // its dot rounds with its own length, not with the vertices'
         // distance from the reference point (nearly tied axes, as a polygon
         // of many vertices has, are then told apart as EPA tells them).
-        *reach = normal.dot(other[j] - own[i]);
+        *reach = normal.dot(other.placed[j] - own.placed[i]);
     }
     true
 }
