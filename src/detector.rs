@@ -406,6 +406,19 @@ impl<R: Real, P> Gjk<R, P> {
                 }
             }
         }
+        // Polygons past eight vertices overlapping by far more than rounding:
+        // the distance query certainly finds no separation, and the manifold
+        // takes the penetration query's walked answer without GJK's run.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if P::SEPARATING_AXES && pair.small_polygons().is_none() {
+            if let Some((pa, pb)) = pair.polygon_cores() {
+                if let Some(Walked::Overlapping(depth, normal)) = crate::walked_axes::penetration(&pair, pa, pb) {
+                    if depth > R::from_u32(256) * R::EPSILON * pair.scale() {
+                        return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                    }
+                }
+            }
+        }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreContact::Apart(s) => Some(apart(s)),
             CoreContact::Resolved(p) => p.map(overlapping),

@@ -6,8 +6,9 @@
 //! products. On hosts it beats EPA, whose every iteration scans both
 //! polygons for a support.
 //!
-//! Worked in the pair's frame (A's, relative to A's reference point), B's
-//! vertices placed there once, as every query does.
+//! Measured in the pair's frame (A's, relative to A's reference point), B's
+//! vertices placed there once, as every query does; but each walk reads the
+//! polygon it follows in that polygon's own frame, where it is convex.
 
 use crate::minkowski::Pair;
 use crate::polytope::polytope_support;
