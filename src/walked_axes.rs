@@ -16,10 +16,11 @@ use crate::real::{Real, V2};
 use crate::sat::{penetration_along, scaled_separation};
 use crate::shape::SupportMap;
 
-/// Up to this many vertices a side, polygons' penetrations are walked (the
-/// walk's arrays are on the stack); beyond, EPA's few supports, each found
-/// in `O(log n)`, answer.
-pub(crate) const WALKED_MAX: usize = 64;
+/// Up to this many vertices a side, polygons' penetrations are walked;
+/// beyond, EPA answers. The manifold decides it: it takes the penetration
+/// query's answer, and after GJK has found the cores overlapping, EPA
+/// finishes 64-gons sooner than the walk does.
+pub(crate) const WALKED_MAX: usize = 32;
 
 /// What the axes say about two polygons.
 pub(crate) enum Walked<R> {
@@ -55,23 +56,19 @@ where
     // A's axes, then B's.
     let mut normals = [V2::zero(); 2 * WALKED_MAX];
     let mut least = [R::ZERO; 2 * WALKED_MAX];
-    let separates = |least: &[R]| least.iter().fold(false, |any, &s| any | (s > R::ZERO));
     let (normals_a, normals_b) = normals.split_at_mut(n);
     let (least_a, least_b) = least.split_at_mut(n);
     let a_own = Walking { own: a, placed: a };
-    if !walk(a_own, |n| n, b_own, |n| pair.pair_vector_to_b(n), normals_a, least_a) {
-        return None;
-    }
-    // Apart by one of A's axes: B's need no walk.
-    if separates(least_a) {
-        return Some(Walked::Apart);
+    match walk(a_own, |n| n, b_own, |n| pair.pair_vector_to_b(n), normals_a, least_a) {
+        Walk::Measured => {}
+        Walk::Parted => return Some(Walked::Apart),
+        Walk::Lost => return None,
     }
     let (normals_b, least_b) = (&mut normals_b[..m], &mut least_b[..m]);
-    if !walk(b_own, |n| pair.b_vector_to_pair(n), a_own, |n| n, normals_b, least_b) {
-        return None;
-    }
-    if separates(least_b) {
-        return Some(Walked::Apart);
+    match walk(b_own, |n| pair.b_vector_to_pair(n), a_own, |n| n, normals_b, least_b) {
+        Walk::Measured => {}
+        Walk::Parted => return Some(Walked::Apart),
+        Walk::Lost => return None,
     }
     let axes = n + m;
     let (best, top) = least_overlap(&normals[..axes], &least[..axes]);
@@ -112,6 +109,18 @@ fn least_overlap<R: Real>(normals: &[V2<R>], least: &[R]) -> (usize, R) {
     (best, top)
 }
 
+/// How a walk ended.
+enum Walk {
+    /// Every axis measured.
+    Measured,
+    /// An axis separates the polygons (touching does not): the rest need
+    /// not be measured. Overlapping pairs never take the branch, so it
+    /// costs them nothing a predictor misses.
+    Parted,
+    /// Rounding would take the walk past two turns.
+    Lost,
+}
+
 /// A polygon walked along: its vertices in its own frame, where they are
 /// convex, and the same vertices in the pair frame.
 #[derive(Clone, Copy)]
@@ -131,7 +140,7 @@ struct Walking<'v, R> {
 /// from the first normal's, found by a scan. Both polygons are read where
 /// they are convex, so convexity bounds the whole walk by one turn round
 /// `other` (and rounding, on edges nearly parallel to a normal, by a vertex
-/// whose dot product ties to rounding); false where it would go on past two.
+/// whose dot product ties to rounding).
 fn walk<R: Real>(
     own: Walking<'_, R>,
     to_pair: impl Fn(V2<R>) -> V2<R>,
@@ -139,7 +148,7 @@ fn walk<R: Real>(
     to_other: impl Fn(V2<R>) -> V2<R>,
     normals: &mut [V2<R>],
     least: &mut [R],
-) -> bool {
+) -> Walk {
     let (n, m) = (own.own.len().min(own.placed.len()), other.own.len().min(other.placed.len()));
     let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
     let normal = |i: usize| to_pair((own.own[next(i, n)] - own.own[i]).perp_cw());
@@ -152,7 +161,7 @@ fn walk<R: Real>(
         let along = to_other(normal);
         while (other.own[next(j, m)] - other.own[j]).dot(along) < R::ZERO {
             if steps == 0 {
-                return false;
+                return Walk::Lost;
             }
             j = next(j, m);
             steps -= 1;
@@ -163,6 +172,9 @@ fn walk<R: Real>(
         // distance from the reference point (nearly tied axes, as a polygon
         // of many vertices has, are then told apart as EPA tells them).
         *reach = normal.dot(other.placed[j] - own.placed[i]);
+        if *reach > R::ZERO {
+            return Walk::Parted;
+        }
     }
-    true
+    Walk::Measured
 }
