@@ -22,24 +22,32 @@ struct Padded<R> {
     v: [V2<R>; M],
     xs: [R; M],
     ys: [R; M],
+    /// Each edge's outward normal (not unit), taken in the polygon's own
+    /// frame and turned: from turned vertices, rounding would tilt a short
+    /// edge's normal until the polygon reached past the edge's line along
+    /// it, and a turned sliver's depth came out too small.
+    normals: [V2<R>; M],
     len: usize,
 }
 
 impl<R: Real> Padded<R> {
-    fn new(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>) -> Self {
-        let first = place(vertices.first().copied().unwrap_or_default());
-        let v: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).map_or(first, |&p| place(p)));
+    fn new(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>, turn: impl Fn(V2<R>) -> V2<R>) -> Self {
+        let own_first = vertices.first().copied().unwrap_or_default();
+        let own: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).copied().unwrap_or(own_first));
+        let v = own.map(&place);
         let (xs, ys) = (core::array::from_fn(|i| v[i].x), core::array::from_fn(|i| v[i].y));
-        Self { v, xs, ys, len: vertices.len().min(M) }
+        // The edge turned clockwise, the polygon being counter-clockwise.
+        // The slot after the last vertex holds the first, so the closing
+        // edge needs no test of the length, and every slot past it has a
+        // zero normal.
+        let normals = core::array::from_fn(|i| turn((own[(i + 1) % M] - own[i]).perp_cw()));
+        Self { v, xs, ys, normals, len: vertices.len().min(M) }
     }
 
-    /// The outward normal of edge `i` (not unit): the edge turned clockwise,
-    /// the polygon being counter-clockwise. The slot after the last vertex
-    /// holds the first, so the closing edge needs no test of the length,
-    /// and every slot past it has a zero normal.
+    /// The outward normal of edge `i` (not unit), in the pair frame.
     #[inline(always)]
     fn normal(&self, i: usize) -> V2<R> {
-        (self.v[(i + 1) % M] - self.v[i % M]).perp_cw()
+        self.normals[i % M]
     }
 }
 
@@ -82,7 +90,7 @@ impl<R: Real> Polygons<R> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        Self { a: Padded::new(a, |p| p), b: Padded::new(b, |p| pair.b_to_pair(p)) }
+        Self { a: Padded::new(a, |p| p, |n| n), b: Padded::new(b, |p| pair.b_to_pair(p), |n| pair.b_vector_to_pair(n)) }
     }
 
     /// The support point of B - A along `d` and its id (A's vertex index
