@@ -140,7 +140,8 @@ struct Entry<R> {
 /// frame), with the cores' support; the caller has ruled out an overlap at
 /// the start. `max_iterations` and `epsilon` bound the refinement on curved
 /// cores (relative to the pair's size), as they do the GJK ray cast. Out
-/// of line on bare metal, for the stack (see `Gjk::cast`).
+/// of line on bare metal, so its working values and the caller's are never
+/// held at once (see `Gjk::cast`).
 #[cfg_attr(target_os = "none", inline(never))]
 pub(crate) fn cast_pair<R, A, B>(
     pair: &Pair<'_, R, A, B>,

@@ -239,9 +239,8 @@ impl<R: Real, P> Gjk<R, P> {
                 }
             }
         }
-        // GJK in a function of its own and its result matched by reference,
-        // so this frame holds only the pair and the simplex's points while
-        // the solver's polytope is on the stack.
+        // GJK in a function of its own, its result matched by reference, so
+        // that its working values are gone before the solver's polytope exists.
         match core_proximity(pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             Proximity::Overlapping(ref enclosing) => Some(solved(&self.solver, pair, enclosing)),
             Proximity::Resolved(penetration) => penetration,
@@ -406,17 +405,20 @@ impl<R: Real, P> Gjk<R, P> {
                 }
             }
         }
-        // Polygons past eight vertices overlapping by far more than rounding:
-        // the distance query certainly finds no separation, and the manifold
-        // takes the penetration query's walked answer without GJK's run.
-        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if P::SEPARATING_AXES && pair.small_polygons().is_none() {
-            if let Some((pa, pb)) = pair.polygon_cores() {
-                if let Some(Walked::Overlapping(depth, normal)) = crate::walked_axes::penetration(&pair, pa, pb) {
-                    if depth > R::from_u32(256) * R::EPSILON * pair.scale() {
-                        return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
-                    }
-                }
+        // Polygons past eight vertices: the penetration query's walked
+        // answer, asked once. Overlapping by far more than rounding, the
+        // distance query certainly finds no separation, and GJK need not run.
+        let walked = if P::SEPARATING_AXES && pair.small_polygons().is_none() {
+            pair.polygon_cores().and_then(|(pa, pb)| match crate::walked_axes::penetration(&pair, pa, pb) {
+                Some(Walked::Overlapping(depth, normal)) => Some((depth, normal)),
+                _ => None,
+            })
+        } else {
+            None
+        };
+        if let Some((depth, normal)) = walked {
+            if depth > R::from_u32(256) * R::EPSILON * pair.scale() {
+                return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
             }
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
@@ -431,11 +433,8 @@ impl<R: Real, P> Gjk<R, P> {
                     }
                     // The penetration query's answer, to the bit: axes that
                     // say apart (touching, to rounding) leave it to EPA.
-                    if let Some((pa, pb)) = pair.polygon_cores() {
-                        if let Some(Walked::Overlapping(depth, normal)) = crate::walked_axes::penetration(&pair, pa, pb)
-                        {
-                            return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
-                        }
+                    if let Some((depth, normal)) = walked {
+                        return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
                     }
                     if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(&pair) {
                         if let RoundedAxes::Overlapping(depth, normal) = rounded_axes(&pair, axes) {
@@ -845,9 +844,9 @@ fn nearest<R: Real>(
     }
 }
 
-/// `f()` in a frame of its own on bare metal: a query that asks several
-/// (the cast, the manifold) then never holds their working values and EPA's
-/// polytope on the stack together, and peaks at the largest, not the sum.
+/// `f()` in a frame of its own on bare metal, so that a query that asks
+/// several (the cast, the manifold) never holds two of their working sets
+/// at once.
 #[cfg_attr(target_os = "none", inline(never))]
 fn in_own_frame<T>(f: impl FnOnce() -> T) -> T {
     f()
@@ -1038,9 +1037,9 @@ enum Proximity<R: Real> {
 }
 
 /// GJK for the penetration query, with the closed form for rounded shapes
-/// whose cores are apart. Not inlined on bare metal, and it returns no
-/// simplex, so GJK's values are off the stack before the solver's polytope
-/// goes on it.
+/// whose cores are apart. Not inlined on bare metal, and returning no
+/// simplex, so that GJK's values are gone before the solver's polytope
+/// exists.
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline(always))]
 fn core_proximity<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> Proximity<R>

@@ -42,8 +42,8 @@ pub trait PenetrationSolver<R: Real> {
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R>;
 }
 
-/// The expanding polytope algorithm with room for `N` polytope vertices on
-/// the stack (default 32; a larger `N` is more stack). A full polytope
+/// The expanding polytope algorithm with room for `N` polytope vertices
+/// (default 32), on the stack so that no allocator is needed. A full polytope
 /// merges away the corner that matters least (one that no longer can, where
 /// there is one); when none can go the answer says `Status::CapacityLimit`.
 ///
@@ -82,8 +82,7 @@ impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
 }
 
 /// A polytope vertex and the distance of the edge that starts at it, kept
-/// small: the polytope's corners are the largest thing on a
-/// microcontroller's stack during a penetration query.
+/// small because a penetration query holds a whole polytope of them.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Corner<R> {
     w: V2<R>,
@@ -206,7 +205,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     simplex: &[SupportPoint<R>],
 ) -> PenetrationEstimate<R> {
     let curved = !difference.is_polytope();
-    // A closure, so no frame of its own is added where the stack peaks.
+    // A closure, not a function: the query's deepest point gets no extra frame.
     let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;

@@ -5,6 +5,8 @@
 
 use core::cell::Cell;
 
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::polytope::SMALL_POLYGON_MAX;
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
@@ -184,7 +186,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// [`support`](Self::support) for the queries that ask for supports in
     /// several places (distance, EPA): one out-of-line copy on bare-metal
-    /// targets, where each inlined copy costs flash. The intersection test
+    /// targets, so that each call site does not carry a copy of its own. The intersection test
     /// keeps the inlined one where the shapes' types are known
     /// ([`shapes_known`](Self::shapes_known)): there the compiler sees that a
     /// polygon's ids are never [`NO_ID`] and drops the code for curved
@@ -237,17 +239,15 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         MinkowskiVertex { w: b - a, a, b, id }
     }
 
-    /// The two cores as small polygons ([`SupportMap::small_polygon`]),
-    /// where both shapes' types are known when the program is compiled
-    /// (through trait objects, GJK and the penetration solver answer).
+    /// The two cores as small polygons (of at most [`SMALL_POLYGON_MAX`]
+    /// vertices each), where both shapes' types are known when the program
+    /// is compiled (through trait objects, GJK and the penetration solver
+    /// answer).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn small_polygons(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
-        if !Self::shapes_known() {
-            return None;
-        }
-        let (a, b): (&'s A, &'s B) = (self.a, self.b);
-        Some((a.small_polygon()?.vertices, b.small_polygon()?.vertices))
+        let small = |v: Vertices<'s, R>| v.len() <= SMALL_POLYGON_MAX;
+        self.polygon_cores().filter(|&(a, b)| small(a) && small(b))
     }
 
     /// The two cores as polygons of any size ([`SupportMap::polygon_core`]),

@@ -8,8 +8,8 @@
 //!
 //! The simplex is generic over what each vertex carries besides its point
 //! and id: the intersection test carries nothing (`()`), the distance query
-//! the shape points it needs for closest points ([`Witness`]). The test's
-//! simplex stays small, which is what its speed and stack depth come from.
+//! the shape points it needs for closest points ([`Witness`]), so the
+//! test's simplex is as small and as quick to copy as it can be.
 
 use crate::minkowski::{MinkowskiVertex, NO_ID};
 use crate::real::{Real, V2};
@@ -314,9 +314,9 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// the foot on it; `None` when the triangle encloses the origin (the
 /// boundary counts: touching).
 ///
-/// Out of line on bare metal in f32, so its frame is on the stack only
-/// while a triangle is solved; inlined where the scalar asks for flat
-/// frames (`FLAT_GJK`, in `real.rs`).
+/// Out of line on bare metal in f32, so the GJK loop that calls it keeps a
+/// small frame; inlined where the scalar asks for flat frames (`FLAT_GJK`,
+/// in `real.rs`).
 #[inline(always)]
 fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
     if R::FLAT_GJK {

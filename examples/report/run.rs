@@ -1,8 +1,7 @@
 //! One family: every query, both precisions, both libraries, timed in turn.
 
 use crate::cases::{Cases, Family};
-use crate::judge::median;
-use crate::judge::{Acc, Query};
+use crate::judge::{median, Acc, Query};
 use crate::ours::{accuracy_and_batch_g, build_family};
 use crate::parry::{parry32, parry64};
 use crate::timing::{pass_ratio, time_interleaved, Meas};
