@@ -337,6 +337,14 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         (self.cos, self.sin, self.offset)
     }
 
+    /// B's rotation in the pair frame (cosine, sine), `None` for none: for
+    /// turning many vectors with the question asked once.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn b_rotation(&self) -> Option<(R, R)> {
+        self.rotated.then_some((self.cos, self.sin))
+    }
+
     /// Each shape's bounding radius about its center.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]

@@ -31,16 +31,26 @@ struct Padded<R> {
 }
 
 impl<R: Real> Padded<R> {
-    fn new(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>, turn: impl Fn(V2<R>) -> V2<R>) -> Self {
+    /// `place` puts a vertex in the pair frame; `rotation` (cosine, sine),
+    /// if any, turns a normal there, asked once for all eight.
+    #[inline(always)]
+    fn new(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>, rotation: Option<(R, R)>) -> Self {
         let own_first = vertices.first().copied().unwrap_or_default();
         let own: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).copied().unwrap_or(own_first));
-        let v = own.map(&place);
+        let v = own.map(place);
         let (xs, ys) = (core::array::from_fn(|i| v[i].x), core::array::from_fn(|i| v[i].y));
         // The edge turned clockwise, the polygon being counter-clockwise.
         // The slot after the last vertex holds the first, so the closing
         // edge needs no test of the length, and every slot past it has a
         // zero normal.
-        let normals = core::array::from_fn(|i| turn((own[(i + 1) % M] - own[i]).perp_cw()));
+        let edge = |i: usize| (own[(i + 1) % M] - own[i]).perp_cw();
+        let normals = match rotation {
+            Some((cos, sin)) => core::array::from_fn(|i| {
+                let n = edge(i);
+                V2::new(cos * n.x - sin * n.y, sin * n.x + cos * n.y)
+            }),
+            None => core::array::from_fn(edge),
+        };
         Self { v, xs, ys, normals, len: vertices.len().min(M) }
     }
 
@@ -90,7 +100,7 @@ impl<R: Real> Polygons<R> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        Self { a: Padded::new(a, |p| p, |n| n), b: Padded::new(b, |p| pair.b_to_pair(p), |n| pair.b_vector_to_pair(n)) }
+        Self { a: Padded::new(a, |p| p, None), b: Padded::new(b, |p| pair.b_to_pair(p), pair.b_rotation()) }
     }
 
     /// The support point of B - A along `d` and its id (A's vertex index
