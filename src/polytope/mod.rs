@@ -125,6 +125,14 @@ pub(crate) fn at<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
 /// convex polygon turn monotonically through one full turn, so angles measured
 /// from edge 0 are sorted and a binary search finds that edge. Rounding can make
 /// the comparison wrong for nearly parallel edges; the hill climb mends that.
+///
+/// A polygon searched is large and, in a scene of many, read from memory
+/// rather than cache, where each probe waiting for the one before would wait
+/// on a miss: so the search asks for the lines it may read before it reads
+/// them. First a coarse sample of the whole polygon (one wait for all, and
+/// later searches of the same query find it in cache), then at each halving
+/// the probes two halvings on, and once the bracket spans few lines, all of
+/// them.
 fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
     let n = vertices.len();
     let edge = |i: usize| at(vertices, if i + 1 >= n { 0 } else { i + 1 }) - at(vertices, i);
@@ -138,15 +146,58 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
     let angle_less = |u: V2<R>, hu: bool, w: V2<R>, hw: bool| if hu != hw { !hu } else { u.cross(w) > R::ZERO };
     let ht = half(tangent);
     // The first edge k with angle(e_k) >= angle(tangent); edges 1..n.
-    let k = first_reached(1, n, |k| {
-        let e = edge(k);
-        !angle_less(e, half(e), tangent, ht)
-    });
+    const SAMPLES: usize = 16;
+    for j in 0..SAMPLES {
+        prefetch(vertices, j * n / SAMPLES);
+    }
+    let per_line = (64 / core::mem::size_of::<V2<R>>()).max(1);
+    let (mut lo, mut hi) = (1, n);
+    let mut swept = false;
+    // The first edge k in 1..n with angle(e_k) >= angle(tangent).
+    while lo < hi {
+        let width = hi - lo;
+        if !swept && width <= 16 * per_line {
+            swept = true;
+            for i in (lo..=hi).step_by(per_line) {
+                prefetch(vertices, i);
+            }
+            prefetch(vertices, hi);
+        } else if !swept {
+            for j in [1, 3, 5, 7] {
+                prefetch(vertices, lo + j * width / 8);
+            }
+        }
+        let mid = lo + width / 2;
+        let e = edge(mid);
+        if angle_less(e, half(e), tangent, ht) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    let k = lo;
     if k >= n {
         0
     } else {
         k
     }
+}
+
+/// Asks the processor to bring vertex `i`'s cache line in, without waiting
+/// for it. Indices past the end are harmless: a prefetch never faults.
+#[inline(always)]
+fn prefetch<R: Real>(vertices: &[V2<R>], i: usize) {
+    #[cfg(target_arch = "x86_64")]
+    #[allow(unsafe_code)]
+    // SAFETY: SSE is part of every x86_64 processor, and a prefetch is a
+    // hint that reads nothing the program sees and never faults, whatever
+    // the address (here one computed without `unsafe` pointer arithmetic).
+    unsafe {
+        use core::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>(vertices.as_ptr().wrapping_add(i).cast());
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (vertices, i);
 }
 
 /// The first index in `lo..hi` where `reached` holds, given that it holds
