@@ -91,6 +91,9 @@ pub(crate) struct Corner<R> {
     /// of a curve (set) or a vertex of both cores (clear): all the polish
     /// needs to know of the support id.
     signed_distance: R,
+    /// The support id, where a support between two corners can use it.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    id: u32,
 }
 
 impl<R: Real> Corner<R> {
@@ -98,7 +101,12 @@ impl<R: Real> Corner<R> {
     /// is false where both cores are polytopes: the flag is then never set
     /// and never read, and the compiler drops its code (nothing polishes).
     fn new(w: V2<R>, id: u32, curved: bool) -> Self {
-        Self { w, signed_distance: if curved && id == NO_ID { -R::ZERO } else { R::ZERO } }
+        Self {
+            w,
+            signed_distance: if curved && id == NO_ID { -R::ZERO } else { R::ZERO },
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            id,
+        }
     }
     #[inline(always)]
     fn edge_distance(&self) -> R {
@@ -265,6 +273,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         if iterations >= config.max_iterations() {
             break (i, lower, Status::IterationLimit);
         }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        let w = corner(&difference.support_between(normal.to_glam(), p.id, q.id), curved);
+        #[cfg(any(target_os = "none", target_family = "wasm"))]
         let w = support(normal);
         iterations += 1;
         let reach = w.w.dot(normal);

@@ -10,7 +10,7 @@
 //! - no progress: `|v|` grew, so rounding has the last word;
 //! - the iteration limit, reported as such.
 
-use crate::minkowski::{MinkowskiDifference, Pair, SupportPoint, NO_ID};
+use crate::minkowski::{MinkowskiDifference, MinkowskiVertex, Pair, SupportPoint, NO_ID};
 use crate::real::{Real, V2};
 use crate::result::Status;
 use crate::shape::SupportMap;
@@ -170,7 +170,7 @@ where
             }
             break (v, Status::IterationLimit);
         }
-        let w = pair.support_shared(-v);
+        let w = support_beyond(pair, simplex, v);
         iterations += 1;
         let length = vv.sqrt();
         let bound = v.dot(w.w) / length;
@@ -198,6 +198,28 @@ where
         simplex.push(Vertex::from_minkowski(&w));
     };
     separated(simplex, v, lower_bound, iterations, status)
+}
+
+/// The support along `-v`, `v` the closest point of the reduced simplex.
+/// Where that is a segment, `-v` is its normal, and the support lies on
+/// the boundary between its ends: on hosts two polygons then search only
+/// that arc ([`Pair::support_between`]).
+#[inline(always)]
+fn support_beyond<R, A, B, P>(pair: &Pair<'_, R, A, B>, simplex: &Simplex<R, P>, v: V2<R>) -> MinkowskiVertex<R>
+where
+    R: Real,
+    P: Payload<R>,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    if let ([p, q, _], 2) = simplex.slots() {
+        // Counter-clockwise from p to q where `-v` is on the right of p to q.
+        let (from, to) = if (q.w - p.w).cross(v) > R::ZERO { (p.id, q.id) } else { (q.id, p.id) };
+        return pair.support_between(-v, from, to);
+    }
+    let _ = simplex;
+    pair.support_shared(-v)
 }
 
 /// The simplex of the first support point, for [`distance_loop_from`]. Inlined,

@@ -6,7 +6,7 @@
 use core::cell::Cell;
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-use crate::polytope::SMALL_POLYGON_MAX;
+use crate::polytope::{polytope_support_between, ARC_SEARCH_MIN, SMALL_POLYGON_MAX};
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
@@ -42,6 +42,16 @@ pub struct SupportPoint<R: Real> {
 pub trait MinkowskiDifference<R: Real> {
     /// The farthest point of B - A along `direction` (not necessarily unit).
     fn support(&self, direction: R::Vector) -> SupportPoint<R>;
+    /// The support along `direction` where it turns between the directions
+    /// whose supports were the points of ids `from` and `to`, in that order
+    /// counter-clockwise, as the outward normal of a polytope's edge lies
+    /// between its ends': a difference of polygons then searches only the
+    /// vertices between. The answer is [`support`](Self::support)'s, which
+    /// the default gives.
+    fn support_between(&self, direction: R::Vector, from: u32, to: u32) -> SupportPoint<R> {
+        let _ = (from, to);
+        self.support(direction)
+    }
     /// The pair's size: the larger bounding radius. Relative tolerances are
     /// multiplied by it.
     fn scale(&self) -> R;
@@ -225,6 +235,30 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         core::mem::size_of::<&A>() == thin && core::mem::size_of::<&B>() == thin
     }
 
+    /// [`MinkowskiDifference::support_between`] for two polygons, one of
+    /// more than [`ARC_SEARCH_MIN`] vertices, where both shapes' types are known when the
+    /// program is compiled: each polygon's support is searched on its arc
+    /// between the two ids' vertices (A's along `-d`, turning the same way).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn support_between(&self, d: V2<R>, from: u32, to: u32) -> MinkowskiVertex<R> {
+        let Some((a, b)) =
+            self.polygon_cores().filter(|(a, b)| (ARC_SEARCH_MIN + 1..0xFFFF).contains(&a.len().max(b.len())))
+        else {
+            return self.support_shared(d);
+        };
+        if from == NO_ID || to == NO_ID {
+            return self.support_shared(d);
+        }
+        let (ia, a) = polytope_support_between(a, -d, from >> 16, to >> 16);
+        let (ib, b) = polytope_support_between(b, self.inverse_rotate(d), from & 0xFFFF, to & 0xFFFF);
+        let (ia, ib) = (ia as u32, ib as u32);
+        self.hint_a.set(ia);
+        self.hint_b.set(ib);
+        let b = self.rotate(b) + self.offset;
+        MinkowskiVertex { w: b - a, a, b, id: (ia << 16) | ib }
+    }
+
     /// The support point of B - A along `d`.
     #[inline(always)]
     pub fn support(&self, d: V2<R>) -> MinkowskiVertex<R> {
@@ -399,6 +433,12 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R> for Pair<'_, R, A, B> {
     fn support(&self, direction: R::Vector) -> SupportPoint<R> {
         let v = self.support_shared(V2::from_glam(direction));
+        SupportPoint { point: v.w.to_glam(), id: v.id }
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn support_between(&self, direction: R::Vector, from: u32, to: u32) -> SupportPoint<R> {
+        let v = self.support_between(V2::from_glam(direction), from, to);
         SupportPoint { point: v.w.to_glam(), id: v.id }
     }
     fn scale(&self) -> R {

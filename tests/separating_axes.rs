@@ -5,7 +5,8 @@
 //! as the GJK and EPA path is in tests/properties.rs: random convex polygons
 //! of 3 to 8 vertices, and of 9 to 64 (near an ellipse, many edges nearly
 //! parallel, some vertices exactly on an edge between two others; slivers
-//! down to 1e-6 across), at scales from 1e-13 to 1e4, near the origin and
+//! down to 1e-6 across), and of 65 to 512, whose EPA supports search arcs
+//! (as do those of 33 to 64), at scales from 1e-13 to 1e4, near the origin and
 //! far from it, placed with and without rotation, about half of them
 //! overlapping and many touching. Every verdict beyond 8 eps L must be
 //! right, every depth within 8 eps L (plus the placement's rounding) of the
@@ -60,6 +61,22 @@ type Pt = [f64; 2];
 /// origin far away or not.
 fn placement() -> impl Strategy<Value = (i64, i64, Option<f64>, bool)> {
     (-30i64..=30, -30i64..=30, prop::option::of(0.0f64..6.3), prop::bool::ANY)
+}
+
+/// 65 to 512 vertices, as [`medium_polygon`] but denser: penetration of
+/// polygons this large goes through EPA, whose supports search only the arc
+/// between an edge's ends, and (beyond 64) a search rather than a scan.
+fn large_polygon() -> impl Strategy<Value = Spec> {
+    let points = prop::collection::vec((0.0f64..std::f64::consts::TAU, -8i64..=8), 150..700);
+    (points, 0.3f64..1.0, -40i32..=13)
+        .prop_map(|(points, aspect, scale_exp)| {
+            let near = points.iter().map(|&(t, r)| {
+                let radius = (100_000 + r) as f64;
+                ((radius * t.cos()).round() as i64, (radius * aspect * t.sin()).round() as i64)
+            });
+            Spec { hull: geo::integer_hull(near.collect()), scale_exp }
+        })
+        .prop_filter("65 to 512 vertices", |s| (65..=512).contains(&s.hull.len()))
 }
 
 /// 9 to 64 vertices near an ellipse of radius a million and aspect down to
@@ -157,6 +174,8 @@ sat_suite!(walked_axes_match_the_oracle_f32, f32, Vec2, medium_polygon(), 64, 70
 sat_suite!(walked_axes_match_the_oracle_f64, f64, DVec2, medium_polygon(), 64, 70, 1000);
 sat_suite!(walked_slivers_match_the_oracle_f32, f32, Vec2, sliver_polygon(), 64, 70_000, 1000);
 sat_suite!(walked_slivers_match_the_oracle_f64, f64, DVec2, sliver_polygon(), 64, 70_000, 1000);
+sat_suite!(large_polygons_match_the_oracle_f32, f32, Vec2, large_polygon(), 512, 7000, 300);
+sat_suite!(large_polygons_match_the_oracle_f64, f64, DVec2, large_polygon(), 512, 7000, 300);
 
 macro_rules! tiny_suite {
     ($name:ident, $r:ty, $vec:ident) => {

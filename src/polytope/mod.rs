@@ -183,6 +183,90 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
     }
 }
 
+/// The edge from vertex `i` to the next, cyclically (zero out of range).
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn edge_from<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
+    let n = vertices.len();
+    at(vertices, if i + 1 >= n { 0 } else { i + 1 }) - at(vertices, i)
+}
+
+/// Angles measured counter-clockwise from a reference edge, compared
+/// exactly by half turns and cross products, against the tangent `perp(d)`
+/// of a support direction `d`.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+struct Turning<R: Real> {
+    reference: V2<R>,
+    tangent: V2<R>,
+    tangent_half: bool,
+}
+
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+impl<R: Real> Turning<R> {
+    #[inline(always)]
+    fn from(reference: V2<R>, d: V2<R>) -> Self {
+        let mut turning = Self { reference, tangent: d.perp(), tangent_half: false };
+        turning.tangent_half = turning.second_half(turning.tangent);
+        turning
+    }
+    /// Whether `u` is a half turn or more past the reference.
+    #[inline(always)]
+    fn second_half(&self, u: V2<R>) -> bool {
+        let c = self.reference.cross(u);
+        !(c > R::ZERO || (c == R::ZERO && self.reference.dot(u) > R::ZERO))
+    }
+    /// Whether edge `e` has turned less than the tangent from the reference.
+    #[inline(always)]
+    fn short_of_tangent(&self, e: V2<R>) -> bool {
+        let half = self.second_half(e);
+        if half != self.tangent_half {
+            !half
+        } else {
+            e.cross(self.tangent) > R::ZERO
+        }
+    }
+}
+
+/// Polygons of more vertices than this search an arc for a support between
+/// two known ones ([`polytope_support_between`]); fewer are scanned whole,
+/// in fewer instructions than the search's branches cost.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) const ARC_SEARCH_MIN: usize = 16;
+
+/// Arcs of more vertices than this are searched as the whole polygon is,
+/// whose search asks for its lines ahead ([`angular_search`]); a shorter
+/// arc is read in a few lines, mostly in cache already.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+const ARC_SEARCH_MAX: usize = 128;
+
+/// Support of a polytope along `d` where `d` is known to turn between the
+/// directions whose supports were vertices `from` and `to` (as an EPA
+/// polytope's edge normal lies between its ends'): the support is on the
+/// arc from `from` counter-clockwise to `to`, and a search of that arc
+/// alone finds it, in few steps once the arcs are short. A vertex the arc
+/// got wrong (rounding, or hints that are not such a pair) is caught by a
+/// short climb, and the whole polygon is searched.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, from: u32, to: u32) -> (usize, V2<R>) {
+    let n = vertices.len();
+    let (from, to) = (from as usize, to as usize);
+    let length = if to >= from { to.wrapping_sub(from) } else { to.wrapping_add(n).wrapping_sub(from) };
+    if from < n && to < n && n > ARC_SEARCH_MIN && length <= ARC_SEARCH_MAX {
+        let wrap = |i: usize| if i >= n { i - n } else { i };
+        // Measured from the edge into `from`, which `d`'s tangent has passed.
+        let turning = Turning::from(edge_from(vertices, wrap(from + n - 1)), d);
+        let k = first_reached(0, length, |k| !turning.short_of_tangent(edge_from(vertices, wrap(from + k))));
+        if let (top, true) = hill_climb(vertices, d, wrap(from + k), 2) {
+            return (top, at(vertices, top));
+        }
+    }
+    if simd_scanned::<R>(n) || n <= LINEAR_SCAN_MAX {
+        return scan_support(vertices, d);
+    }
+    let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), n);
+    (k, at(vertices, k))
+}
+
 /// Asks the processor to bring vertex `i`'s cache line in, without waiting
 /// for it. Indices past the end are harmless: a prefetch never faults.
 #[inline(always)]
