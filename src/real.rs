@@ -171,9 +171,10 @@ mod sse2 {
     /// (two chains of four lanes), then the first vertex whose dot equals
     /// it. Carrying an index in every lane would cost as much again as the
     /// dots; the second pass compares the dots the first kept (of up to 64
-    /// vertices; beyond, it computes them again) and stops at the vertex.
-    /// The dots round as the scalar ones (`x dx + y dy`), so equality finds
-    /// the very vertex, ties the first of them.
+    /// vertices; beyond, it computes them again), the kept ones all at once
+    /// into one word of matches. The dots round as the scalar ones
+    /// (`x dx + y dy`), so equality finds the very vertex, ties the first
+    /// of them.
     #[target_feature(enable = "sse2")]
     #[inline]
     fn running_max_f32(v: &[V2<f32>], d: V2<f32>) -> usize {
@@ -205,16 +206,22 @@ mod sse2 {
             core::hint::select_unpredictable(dot > top, dot, top)
         });
         let wanted = _mm_set1_ps(top);
-        let mut quads = v.chunks_exact(4);
-        let whole = 2 * (v.len() / 8);
+        // The kept quads' matches gathered in one word, the first of them
+        // its lowest bit: no branch a quad, whose exit the predictor misses.
+        let whole = (2 * (v.len() / 8)).min(kept.len());
+        let mut matches = 0u64;
+        for (k, &quad) in kept.iter().enumerate().take(whole) {
+            matches |= u64::from(_mm_movemask_ps(_mm_cmpeq_ps(quad, wanted)) as u32) << (4 * k);
+        }
+        if matches != 0 {
+            return matches.trailing_zeros() as usize;
+        }
+        let rest = v.get(4 * whole..).unwrap_or_default();
+        let mut quads = rest.chunks_exact(4);
         for (k, c) in (&mut quads).enumerate() {
-            let quad = match kept.get(k) {
-                Some(&quad) if k < whole => quad,
-                _ => dots(c),
-            };
-            let mask = _mm_movemask_ps(_mm_cmpeq_ps(quad, wanted));
+            let mask = _mm_movemask_ps(_mm_cmpeq_ps(dots(c), wanted));
             if mask != 0 {
-                return 4 * k + mask.trailing_zeros() as usize;
+                return 4 * (whole + k) + mask.trailing_zeros() as usize;
             }
         }
         first_equal(quads.remainder(), v.len() - quads.remainder().len(), d, top)
@@ -249,16 +256,20 @@ mod sse2 {
             core::hint::select_unpredictable(dot > top, dot, top)
         });
         let wanted = _mm_set1_pd(top);
-        let mut pairs = v.chunks_exact(2);
-        let whole = 2 * (v.len() / 4);
+        let whole = (2 * (v.len() / 4)).min(kept.len());
+        let mut matches = 0u64;
+        for (k, &pair) in kept.iter().enumerate().take(whole) {
+            matches |= u64::from(_mm_movemask_pd(_mm_cmpeq_pd(pair, wanted)) as u32) << (2 * k);
+        }
+        if matches != 0 {
+            return matches.trailing_zeros() as usize;
+        }
+        let rest = v.get(2 * whole..).unwrap_or_default();
+        let mut pairs = rest.chunks_exact(2);
         for (k, c) in (&mut pairs).enumerate() {
-            let pair = match kept.get(k) {
-                Some(&pair) if k < whole => pair,
-                _ => dots(c),
-            };
-            let mask = _mm_movemask_pd(_mm_cmpeq_pd(pair, wanted));
+            let mask = _mm_movemask_pd(_mm_cmpeq_pd(dots(c), wanted));
             if mask != 0 {
-                return 2 * k + mask.trailing_zeros() as usize;
+                return 2 * (whole + k) + mask.trailing_zeros() as usize;
             }
         }
         first_equal(pairs.remainder(), v.len() - pairs.remainder().len(), d, top)
