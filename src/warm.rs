@@ -367,6 +367,14 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
+            // The last separating axis, measured in its own polygon's frame
+            // with a margin above rounding: apart, with no polygon placed.
+            if self.separating != NO_ID {
+                let margin = R::from_u32(ROUNDING) * R::EPSILON * Self::size(pair);
+                if separates_by(pair, a, b, self.separating as usize, margin) {
+                    return None;
+                }
+            }
             let polygons = Polygons::new(pair, a, b);
             let found = |(depth, normal): (R, V2<R>), iterations| Penetration {
                 normal: pair.to_world_vector(normal),
