@@ -206,15 +206,11 @@ mod sse2 {
             core::hint::select_unpredictable(dot > top, dot, top)
         });
         let wanted = _mm_set1_ps(top);
-        // The kept quads' matches gathered in one word, the first of them
-        // its lowest bit: no branch a quad, whose exit the predictor misses.
         let whole = (2 * (v.len() / 8)).min(kept.len());
-        let mut matches = 0u64;
-        for (k, &quad) in kept.iter().enumerate().take(whole) {
-            matches |= u64::from(_mm_movemask_ps(_mm_cmpeq_ps(quad, wanted)) as u32) << (4 * k);
-        }
-        if matches != 0 {
-            return matches.trailing_zeros() as usize;
+        if let Some(i) =
+            first_match(kept.get(..whole).unwrap_or_default(), 4, |quad| _mm_movemask_ps(_mm_cmpeq_ps(quad, wanted)))
+        {
+            return i;
         }
         let rest = v.get(4 * whole..).unwrap_or_default();
         let mut quads = rest.chunks_exact(4);
@@ -257,12 +253,10 @@ mod sse2 {
         });
         let wanted = _mm_set1_pd(top);
         let whole = (2 * (v.len() / 4)).min(kept.len());
-        let mut matches = 0u64;
-        for (k, &pair) in kept.iter().enumerate().take(whole) {
-            matches |= u64::from(_mm_movemask_pd(_mm_cmpeq_pd(pair, wanted)) as u32) << (2 * k);
-        }
-        if matches != 0 {
-            return matches.trailing_zeros() as usize;
+        if let Some(i) =
+            first_match(kept.get(..whole).unwrap_or_default(), 2, |pair| _mm_movemask_pd(_mm_cmpeq_pd(pair, wanted)))
+        {
+            return i;
         }
         let rest = v.get(2 * whole..).unwrap_or_default();
         let mut pairs = rest.chunks_exact(2);
@@ -273,6 +267,16 @@ mod sse2 {
             }
         }
         first_equal(pairs.remainder(), v.len() - pairs.remainder().len(), d, top)
+    }
+
+    /// The first lane whose bit `mask` sets, over `blocks` of `lanes` lanes
+    /// each (at most 64 lanes in all): every block's mask gathered in one
+    /// word, the first its lowest bit, with no branch a block, whose exit
+    /// the predictor would miss.
+    #[inline(always)]
+    fn first_match<T: Copy>(blocks: &[T], lanes: usize, mask: impl Fn(T) -> i32) -> Option<usize> {
+        let matches = blocks.iter().enumerate().fold(0u64, |m, (k, &b)| m | u64::from(mask(b) as u32) << (lanes * k));
+        (matches != 0).then(|| matches.trailing_zeros() as usize)
     }
 
     /// The first of `tail` (vertices from `start` on) whose dot is `top`;

@@ -235,6 +235,19 @@ mod small {
                 if surely_encloses(supports.map(|s| s.0), margin, size) { supports.map(|s| s.1) } else { [NO_ID; 3] };
         }
 
+        /// Whether the cached separating axis (there must be one) still
+        /// separates the polygons, measured in its own polygon's frame with
+        /// no vertex placed, by a margin above rounding: then the cold
+        /// queries say apart too.
+        fn still_separates<A, B>(&self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> bool
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let margin = R::from_u32(ROUNDING) * R::EPSILON * Self::size(pair);
+            separates_by(pair, a, b, self.separating as usize, margin)
+        }
+
         /// The intersection test of two small polygons: the cached
         /// separating axis or enclosing triangle if either still decides,
         /// else every axis (and the cache refilled). The verdict is the
@@ -249,11 +262,8 @@ mod small {
                 if self.encloses(pair, a, b) {
                     return decided(true);
                 }
-            } else {
-                let margin = R::from_u32(ROUNDING) * R::EPSILON * Self::size(pair);
-                if separates_by(pair, a, b, self.separating as usize, margin) {
-                    return decided(false);
-                }
+            } else if self.still_separates(pair, a, b) {
+                return decided(false);
             }
             let polygons = Polygons::new(pair, a, b);
             let axes = Axes::of(&polygons);
@@ -367,13 +377,8 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            // The last separating axis, measured in its own polygon's frame
-            // with a margin above rounding: apart, with no polygon placed.
-            if self.separating != NO_ID {
-                let margin = R::from_u32(ROUNDING) * R::EPSILON * Self::size(pair);
-                if separates_by(pair, a, b, self.separating as usize, margin) {
-                    return None;
-                }
+            if self.separating != NO_ID && self.still_separates(pair, a, b) {
+                return None;
             }
             let polygons = Polygons::new(pair, a, b);
             let found = |(depth, normal): (R, V2<R>), iterations| Penetration {

@@ -134,29 +134,20 @@ pub(crate) fn at<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
 /// the probes two halvings on, and once the bracket spans few lines, all of
 /// them.
 fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
-    let n = vertices.len();
-    let edge = |i: usize| at(vertices, if i + 1 >= n { 0 } else { i + 1 }) - at(vertices, i);
-    let e0 = edge(0);
-    let tangent = d.perp();
-    // Half-turn index of u relative to e0: 0 for [0, pi), 1 for [pi, 2 pi).
-    let half = |u: V2<R>| {
-        let c = e0.cross(u);
-        !(c > R::ZERO || (c == R::ZERO && e0.dot(u) > R::ZERO))
-    };
-    let angle_less = |u: V2<R>, hu: bool, w: V2<R>, hw: bool| if hu != hw { !hu } else { u.cross(w) > R::ZERO };
-    let ht = half(tangent);
-    // The first edge k with angle(e_k) >= angle(tangent); edges 1..n.
     const SAMPLES: usize = 16;
+    const SWEPT_LINES: usize = 16;
+    let n = vertices.len();
     for j in 0..SAMPLES {
         prefetch(vertices, j * n / SAMPLES);
     }
+    let turning = Turning::from(edge_from(vertices, 0), d);
     let per_line = (64 / core::mem::size_of::<V2<R>>()).max(1);
     let (mut lo, mut hi) = (1, n);
     let mut swept = false;
     // The first edge k in 1..n with angle(e_k) >= angle(tangent).
     while lo < hi {
         let width = hi - lo;
-        if !swept && width <= 16 * per_line {
+        if !swept && width <= SWEPT_LINES * per_line {
             swept = true;
             for i in (lo..=hi).step_by(per_line) {
                 prefetch(vertices, i);
@@ -168,23 +159,20 @@ fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
             }
         }
         let mid = lo + width / 2;
-        let e = edge(mid);
-        if angle_less(e, half(e), tangent, ht) {
+        if turning.short_of_tangent(edge_from(vertices, mid)) {
             lo = mid + 1;
         } else {
             hi = mid;
         }
     }
-    let k = lo;
-    if k >= n {
+    if lo >= n {
         0
     } else {
-        k
+        lo
     }
 }
 
 /// The edge from vertex `i` to the next, cyclically (zero out of range).
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
 fn edge_from<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
     let n = vertices.len();
@@ -194,14 +182,12 @@ fn edge_from<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
 /// Angles measured counter-clockwise from a reference edge, compared
 /// exactly by half turns and cross products, against the tangent `perp(d)`
 /// of a support direction `d`.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 struct Turning<R: Real> {
     reference: V2<R>,
     tangent: V2<R>,
     tangent_half: bool,
 }
 
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 impl<R: Real> Turning<R> {
     #[inline(always)]
     fn from(reference: V2<R>, d: V2<R>) -> Self {
@@ -250,9 +236,9 @@ const ARC_SEARCH_MAX: usize = 128;
 pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, from: u32, to: u32) -> (usize, V2<R>) {
     let n = vertices.len();
     let (from, to) = (from as usize, to as usize);
-    let length = if to >= from { to.wrapping_sub(from) } else { to.wrapping_add(n).wrapping_sub(from) };
-    if from < n && to < n && n > ARC_SEARCH_MIN && length <= ARC_SEARCH_MAX {
-        let wrap = |i: usize| if i >= n { i - n } else { i };
+    let wrap = |i: usize| if i >= n { i - n } else { i };
+    let length = (from < n && to < n).then(|| wrap(to + n - from));
+    if let Some(length) = length.filter(|&length| n > ARC_SEARCH_MIN && length <= ARC_SEARCH_MAX) {
         // Measured from the edge into `from`, which `d`'s tangent has passed.
         let turning = Turning::from(edge_from(vertices, wrap(from + n - 1)), d);
         let k = first_reached(0, length, |k| !turning.short_of_tangent(edge_from(vertices, wrap(from + k))));
@@ -260,11 +246,8 @@ pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, fr
             return (top, at(vertices, top));
         }
     }
-    if simd_scanned::<R>(n) || n <= LINEAR_SCAN_MAX {
-        return scan_support(vertices, d);
-    }
-    let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), n);
-    (k, at(vertices, k))
+    // The capacity is not known here: any, so the length alone decides.
+    polytope_support::<R, { usize::MAX }>(vertices, d)
 }
 
 /// Asks the processor to bring vertex `i`'s cache line in, without waiting
