@@ -92,13 +92,13 @@ impl<R: Real, P> Gjk<R, P> {
                     return Detection { intersecting, iterations: 1, status: Status::Converged };
                 }
             }
-            // A segment: the axes decide, as for two polygons. Not a
-            // capsule: its cores are mostly apart by less than the radius,
-            // which the axes cannot decide, and GJK's two or so iterations
-            // beat every vertex against every edge.
-            if pair.radius() == R::ZERO {
-                if let Some(axes) = crate::sat::Axes::of_segment_and_polygon(pair) {
-                    let intersecting = !axes.separated();
+            // A segment: the axes decide, as for two polygons. A capsule's
+            // cores are mostly apart by less than the radius, which the
+            // axes cannot decide: its ends and the polygon's vertices do.
+            if let Some((segment, polygon)) = pair.segment_in_small_polygon() {
+                if let Some(intersecting) =
+                    crate::segment_polygon::within(polygon, segment[0], segment[1], pair.radius())
+                {
                     return Detection { intersecting, iterations: 1, status: Status::Converged };
                 }
             }

@@ -69,6 +69,8 @@ mod real;
 mod result;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 mod sat;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod segment_polygon;
 pub mod shape;
 mod simplex;
 mod transform;

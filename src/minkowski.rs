@@ -313,6 +313,17 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some((b.segment_core()?, a.small_polygon()?.vertices, false))
     }
 
+    /// A segment core's end points in a small polygon's frame, and the
+    /// polygon's vertices ([`segment_and_small_polygon`](Self::segment_and_small_polygon)
+    /// placed): what a verdict that needs no frame of its own is measured in.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn segment_in_small_polygon(&self) -> Option<([V2<R>; 2], Vertices<'s, R>)> {
+        let (segment, polygon, segment_is_a) = self.segment_and_small_polygon()?;
+        let place = |p: V2<R>| if segment_is_a { self.inverse_rotate(p - self.offset) } else { self.b_to_pair(p) };
+        Some((segment.map(place), polygon))
+    }
+
     /// A's core vertices (in the pair frame, which is A's), where A lends
     /// them (a polygon of any size, a segment core) and both types are
     /// known when the program is compiled: a contact manifold then finds a support vertex's edges

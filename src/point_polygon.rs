@@ -32,7 +32,7 @@ type EdgeSlots<R> = ([V2<R>; M], [V2<R>; M]);
 /// Indices are selected, not branched on, and the arithmetic runs over
 /// every slot in SIMD lanes, coordinates apart.
 #[inline(always)]
-fn edge_slots<R: Real>(vertices: &[V2<R>]) -> Option<EdgeSlots<R>> {
+pub(crate) fn edge_slots<R: Real>(vertices: &[V2<R>]) -> Option<EdgeSlots<R>> {
     let n = vertices.len();
     if !(3..=M).contains(&n) {
         return None;

@@ -192,7 +192,7 @@ mod rng;
 /// exact distance either way, f32 and f64.
 #[test]
 fn intersection_test_matches_the_exact_verdict() {
-    use rng::{cases, Rng};
+    use rng::{cases, polygon_about_origin, Rng};
     use std::f64::consts::TAU;
     macro_rules! run {
         ($r:ty, $vec:ident) => {{
@@ -204,14 +204,7 @@ fn intersection_test_matches_the_exact_verdict() {
             let (mut apart, mut touching) = (0, 0);
             for i in 0..cases(20_000) {
                 let n = 3 + (i % 6) as usize;
-                let phase = rng.unit();
-                let pts: Vec<Pt> = (0..n)
-                    .map(|k| {
-                        let t = (k as f64 + phase + 0.4 * rng.unit()) / n as f64 * TAU;
-                        let (a, b) = (rng.range(0.5, 1.5), rng.range(0.5, 1.5));
-                        [(a * t.cos()) as R as f64, (b * t.sin()) as R as f64]
-                    })
-                    .collect();
+                let pts: Vec<Pt> = polygon_about_origin(&mut rng, n, |x| x as R as f64);
                 let Ok(polygon) = Polygon::<R, 8>::new(&pts.iter().map(|&p| v(p)).collect::<Vec<_>>()) else {
                     continue;
                 };

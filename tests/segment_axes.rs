@@ -155,3 +155,86 @@ macro_rules! segment_suite {
 
 segment_suite!(segment_axes_match_the_oracle_f32, f32, Vec2);
 segment_suite!(segment_axes_match_the_oracle_f64, f64, DVec2);
+
+#[path = "common/rng.rs"]
+mod rng;
+
+/// The capsule's closed-form intersection test against the exact verdict
+/// where it is decided: segments all around 3- to 8-gons (ends beside edges
+/// and in corner regions, crossing, end-on, parallel to an edge), radii
+/// within a few percent of the exact distance between the cores either way,
+/// the capsule as A and as B, placed with and without rotation, f32 and
+/// f64. The same pairs through `dyn SupportMap` (GJK) must agree wherever
+/// the verdict is decided.
+#[test]
+fn capsule_intersection_test_matches_the_exact_verdict() {
+    use rng::{cases, polygon_about_origin, Rng};
+    use std::f64::consts::TAU;
+    macro_rules! run {
+        ($r:ty, $vec:ident) => {{
+            type R = $r;
+            let eps = R::EPSILON as f64;
+            let v = |p: Pt| $vec::new(p[0] as R, p[1] as R);
+            let gjk = Gjk::<R>::new();
+            let mut rng = Rng(0x6361_7073_756c_65 ^ eps.to_bits());
+            let (mut apart, mut touching) = (0, 0);
+            for i in 0..cases(20_000) {
+                let n = 3 + (i % 6) as usize;
+                let pts: Vec<Pt> = polygon_about_origin(&mut rng, n, |x| x as R as f64);
+                let Ok(polygon) = Polygon::<R, 8>::new(&pts.iter().map(|&p| v(p)).collect::<Vec<_>>()) else {
+                    continue;
+                };
+                // One end around the polygon; the other along a random
+                // direction, or along the nearest edge (parallel faces).
+                let round = |p: Pt| [p[0] as R as f64, p[1] as R as f64];
+                let (t, reach) = (rng.range(0.0, TAU), rng.range(0.0, 3.0));
+                let s0 = round([reach * t.cos(), reach * t.sin()]);
+                let length = rng.range(0.05, 3.0);
+                let heading = if i % 4 == 0 {
+                    let k = (rng.next() % n as u64) as usize;
+                    let (p, q) = (pts[k], pts[(k + 1) % n]);
+                    (q[1] - p[1]).atan2(q[0] - p[0])
+                } else {
+                    rng.range(0.0, TAU)
+                };
+                let s1 = round([s0[0] + length * heading.cos(), s0[1] + length * heading.sin()]);
+                if s0 == s1 {
+                    continue;
+                }
+                let ep = transform_shape(&Shape::Polygon(pts.clone()), 1.0, 0.0, 0.0, 0.0);
+                let core = transform_shape(&Shape::Capsule { a: s0, b: s1, radius: 0.0 }, 1.0, 0.0, 0.0, 0.0);
+                let d = pair(&core, &ep).signed_distance;
+                let radius = ((d.max(0.0) * rng.range(0.95, 1.05)).max(1e-3)) as R as f64;
+                let capsule = Capsule::<R>::new(v(s0), v(s1), radius as R).unwrap();
+                let truth = pair(&transform_shape(&Shape::Capsule { a: s0, b: s1, radius }, 1.0, 0.0, 0.0, 0.0), &ep);
+                // Both shapes turned and moved alike: the verdict is the same.
+                let (angle, shift) = if i % 2 == 0 { (0.0, [0.0, 0.0]) } else { (rng.range(0.0, TAU), [0.75, -2.5]) };
+                let place = Transform::<R>::new(v(shift), angle as R).unwrap();
+                let l = 6.0f64.max(radius);
+                let bound = 8.0 * eps * l;
+                let dynamic: (&dyn SupportMap<R>, &dyn SupportMap<R>) = (&capsule, &polygon);
+                let verdicts = [
+                    gjk.intersects(&capsule, &place, &polygon, &place).intersecting,
+                    gjk.intersects(&polygon, &place, &capsule, &place).intersecting,
+                    gjk.intersects(dynamic.0, &place, dynamic.1, &place).intersecting,
+                    gjk.intersects(dynamic.1, &place, dynamic.0, &place).intersecting,
+                ];
+                let case = format!("{pts:?} {s0:?} {s1:?} {radius} {angle}");
+                if truth.signed_distance > bound {
+                    apart += 1;
+                    assert!(
+                        verdicts.iter().all(|&x| !x),
+                        "{verdicts:?}, exact distance {}: {case}",
+                        truth.signed_distance
+                    );
+                } else if truth.signed_distance < -bound {
+                    touching += 1;
+                    assert!(verdicts.iter().all(|&x| x), "{verdicts:?}, exact depth {}: {case}", truth.depth);
+                }
+            }
+            assert!(apart > cases(20_000) / 5 && touching > cases(20_000) / 5, "{apart} apart, {touching} overlapping");
+        }};
+    }
+    run!(f32, Vec2);
+    run!(f64, DVec2);
+}

@@ -27,3 +27,18 @@ impl Rng {
         lo + (hi - lo) * self.unit()
     }
 }
+
+/// A convex-ish `n`-gon about the origin: one vertex in each of `n` equal
+/// turns (jittered within it), at radii 0.5 to 1.5 on each axis, every
+/// coordinate passed through `round` (to the precision under test). Not
+/// always convex: the caller skips what the constructor refuses.
+pub fn polygon_about_origin(rng: &mut Rng, n: usize, round: fn(f64) -> f64) -> Vec<[f64; 2]> {
+    let phase = rng.unit();
+    (0..n)
+        .map(|k| {
+            let t = (k as f64 + phase + 0.4 * rng.unit()) / n as f64 * std::f64::consts::TAU;
+            let (a, b) = (rng.range(0.5, 1.5), rng.range(0.5, 1.5));
+            [round(a * t.cos()), round(b * t.sin())]
+        })
+        .collect()
+}
