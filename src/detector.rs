@@ -95,12 +95,8 @@ impl<R: Real, P> Gjk<R, P> {
             // A segment: the axes decide, as for two polygons. A capsule's
             // cores are mostly apart by less than the radius, which the
             // axes cannot decide: its ends and the polygon's vertices do.
-            if let Some((segment, polygon)) = pair.segment_in_small_polygon() {
-                if let Some(intersecting) =
-                    crate::segment_polygon::within(polygon, segment[0], segment[1], pair.radius())
-                {
-                    return Detection { intersecting, iterations: 1, status: Status::Converged };
-                }
+            if let Some(intersecting) = segment_within_small_polygon(pair) {
+                return Detection { intersecting, iterations: 1, status: Status::Converged };
             }
         }
         let (intersecting, iterations, status) = intersect(
@@ -158,6 +154,10 @@ impl<R: Real, P> Gjk<R, P> {
             if let Some(beyond) = crate::point_polygon::beyond(polygon, p) {
                 return point_polygon_separation(pair, beyond, point_is_a);
             }
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if segment_within_small_polygon(pair) == Some(true) {
+            return None;
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
         match pair.core_distance(&mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
@@ -422,7 +422,20 @@ impl<R: Real, P> Gjk<R, P> {
             }
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
-            CoreContact::Apart(s) => Some(apart(s)),
+            CoreContact::Apart(s) => {
+                // A segment core and a small polygon that the closed form
+                // finds within reach, which the distance query then calls
+                // touching: they can part from GJK only within rounding of
+                // touching (a margin far above it here), and the penetration
+                // query's answer is then the one to give.
+                let offset = pair.pose().2;
+                let reach = R::TWO * pair.scale() + offset.x.abs() + offset.y.abs() + pair.radius();
+                let near = s.distance <= s.error_bound + R::from_u32(1024) * R::EPSILON * reach;
+                if near && segment_within_small_polygon(&pair) == Some(true) {
+                    return self.penetration_of(&pair).map(overlapping);
+                }
+                Some(apart(s))
+            }
             CoreContact::Resolved(p) => p.map(overlapping),
             CoreContact::Overlapping(ref enclosing) => {
                 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -897,6 +910,21 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
     } else {
         cap
     }
+}
+
+/// Whether a segment core (a capsule's, a segment's) lies within the
+/// radius of a small polygon, in closed form ([`crate::segment_polygon`]);
+/// `None` for other pairs, and where the closed form leaves it to GJK.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn segment_within_small_polygon<R, A, B>(pair: &Pair<'_, R, A, B>) -> Option<bool>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let (segment, polygon) = pair.segment_in_small_polygon()?;
+    crate::segment_polygon::within(polygon, segment[0], segment[1], pair.radius())
 }
 
 /// The separation of a point core and a small polygon from the polygon's
