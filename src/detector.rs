@@ -156,7 +156,7 @@ impl<R: Real, P> Gjk<R, P> {
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if segment_within_small_polygon(pair) == Some(true) {
+        if within_reach_in_closed_form(pair) {
             return None;
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -405,6 +405,19 @@ impl<R: Real, P> Gjk<R, P> {
                 }
             }
         }
+        // Two small polygons: their axes decide overlap as the distance
+        // query does, and give the penetration too, with no GJK.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((pa, pb)) = pair.small_polygons() {
+            let axes = crate::sat::Axes::new(&pair, pa, pb);
+            if !axes.separated() {
+                if P::SEPARATING_AXES {
+                    let (depth, normal) = axes.penetration();
+                    return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                }
+                return self.penetration_of(&pair).map(overlapping);
+            }
+        }
         // Polygons past eight vertices: the penetration query's walked
         // answer, asked once. Overlapping by far more than rounding, the
         // distance query certainly finds no separation, and GJK need not run.
@@ -423,15 +436,14 @@ impl<R: Real, P> Gjk<R, P> {
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreContact::Apart(s) => {
-                // A segment core and a small polygon that the closed form
-                // finds within reach, which the distance query then calls
-                // touching: they can part from GJK only within rounding of
-                // touching (a margin far above it here), and the penetration
-                // query's answer is then the one to give.
+                // Shapes the closed form finds within reach, which the
+                // distance query then calls touching, can part from GJK only
+                // within rounding of touching (a margin far above it here):
+                // the penetration query's answer is then the one to give.
                 let offset = pair.pose().2;
                 let reach = R::TWO * pair.scale() + offset.x.abs() + offset.y.abs() + pair.radius();
                 let near = s.distance <= s.error_bound + R::from_u32(1024) * R::EPSILON * reach;
-                if near && segment_within_small_polygon(&pair) == Some(true) {
+                if near && within_reach_in_closed_form(&pair) {
                     return self.penetration_of(&pair).map(overlapping);
                 }
                 Some(apart(s))
@@ -440,9 +452,11 @@ impl<R: Real, P> Gjk<R, P> {
             CoreContact::Overlapping(ref enclosing) => {
                 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
                 if P::SEPARATING_AXES {
-                    if let Some((pa, pb)) = pair.small_polygons() {
-                        let (depth, normal) = crate::sat::Axes::new(&pair, pa, pb).penetration();
-                        return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+                    // Small polygons get here only where an axis separates
+                    // them (touching, to rounding): so says the penetration
+                    // query.
+                    if pair.small_polygons().is_some() {
+                        return None;
                     }
                     // The penetration query's answer, to the bit: axes that
                     // say apart (touching, to rounding) leave it to EPA.
@@ -509,9 +523,10 @@ impl<R: Real, P> Gjk<R, P> {
 
     /// [`distance`](Self::distance), warm started from `cache` and
     /// updating it, within the same guarantees (its error bound and status
-    /// are its own). GJK starts from the last simplex, its points measured
-    /// again, for polygons of up to eight vertices, and along the last
-    /// normal for other shapes.
+    /// are its own). For polygons of up to eight vertices the verdict is
+    /// the cold query's, from the cached axis or triangle where either
+    /// still decides, and GJK starts from the last simplex, its points
+    /// measured again; other shapes start GJK along the last normal.
     pub fn distance_cached<A, B>(
         &self,
         a: &A,
@@ -527,6 +542,11 @@ impl<R: Real, P> Gjk<R, P> {
         let pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
+            // The cold query's verdict first, as it takes it (from the
+            // cached axis or triangle where either still decides).
+            if cache.intersects_small(&pair, pa, pb).intersecting {
+                return None;
+            }
             let start = cache.simplex(&pair, pa, pb);
             let mut simplex = None::<Simplex<R, Witness<R>>>;
             let (max, epsilon) = (self.config.max_distance_iterations(), self.config.distance_epsilon());
@@ -590,6 +610,16 @@ impl<R: Real, P> Gjk<R, P> {
         P: PenetrationSolver<R>,
     {
         self.manifold_by(a, ta, b, tb, margin, || {
+            // Two small polygons: the cached penetration first, which says
+            // whether they overlap as the distance query would (by their
+            // axes) and, where they do, is all the manifold needs.
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            if P::SEPARATING_AXES && Pair::new(a, ta, b, tb).small_polygons().is_some() {
+                return match self.penetration_cached(a, ta, b, tb, cache) {
+                    Some(p) => Some(overlapping(p)),
+                    None => self.distance_cached(a, ta, b, tb, cache).map(apart),
+                };
+            }
             nearest(self.distance_cached(a, ta, b, tb, cache), || self.penetration_cached(a, ta, b, tb, cache))
         })
     }
@@ -910,6 +940,26 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
     } else {
         cap
     }
+}
+
+/// Whether the cores are within reach (the radii) where a closed form
+/// decides it with no iteration: two small polygons by their separating
+/// axes, a segment core and a small polygon by
+/// [`segment_within_small_polygon`]. The distance query answers `None` for
+/// such pairs before any GJK: most pairs in a scene overlap, and GJK would
+/// only find that out in several iterations.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn within_reach_in_closed_form<R, A, B>(pair: &Pair<'_, R, A, B>) -> bool
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    if let Some((pa, pb)) = pair.small_polygons() {
+        return !crate::sat::Axes::new(pair, pa, pb).separated();
+    }
+    segment_within_small_polygon(pair) == Some(true)
 }
 
 /// Whether a segment core (a capsule's, a segment's) lies within the
