@@ -156,11 +156,47 @@ impl<R: Real, P> Gjk<R, P> {
             }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if within_reach_in_closed_form(pair) {
+        if let Some((pa, pb)) = pair.small_polygons() {
+            let polygons = crate::sat::Polygons::new(pair, pa, pb);
+            return self.small_polygons_distance(pair, &polygons, &crate::sat::Axes::of(&polygons));
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if segment_within_small_polygon(pair) == Some(true) {
             return None;
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
         match pair.core_distance(&mut simplex, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
+            CoreProximity::Overlapping { .. } => None,
+            CoreProximity::Separated(ref core) => separation(pair, core),
+        }
+    }
+
+    /// The distance of two small polygons from their separating axes:
+    /// `None` where no axis parts them (most pairs in a scene overlap, and
+    /// GJK would take several iterations to find it out); the axis that
+    /// parts them the most where an edge and a vertex are closest (the
+    /// common case); else GJK's.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn small_polygons_distance<A, B>(
+        &self,
+        pair: &Pair<'_, R, A, B>,
+        polygons: &crate::sat::Polygons<R>,
+        axes: &crate::sat::Axes<R>,
+    ) -> Option<Separation<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        if !axes.separated() {
+            return None;
+        }
+        if let Some(found) = polygons.face_and_vertex(axes.most_separating_by_square()) {
+            return Some(closed_form_separation(pair, found));
+        }
+        let mut simplex = None::<Simplex<R, Witness<R>>>;
+        let (max, epsilon) = (self.config.max_distance_iterations(), self.config.distance_epsilon());
+        match crate::gjk::distance_loop_from(pair, &mut simplex, None, max, epsilon) {
             CoreProximity::Overlapping { .. } => None,
             CoreProximity::Separated(ref core) => separation(pair, core),
         }
@@ -406,17 +442,24 @@ impl<R: Real, P> Gjk<R, P> {
             }
         }
         // Two small polygons: their axes decide overlap as the distance
-        // query does, and give the penetration too, with no GJK.
+        // query does, and give the penetration too, with no GJK; apart,
+        // the distance query's answer (or where its GJK finds them
+        // touching after all, the penetration query's).
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
-            let axes = crate::sat::Axes::new(&pair, pa, pb);
-            if !axes.separated() {
-                if P::SEPARATING_AXES {
-                    let (depth, normal) = axes.penetration();
-                    return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
-                }
-                return self.penetration_of(&pair).map(overlapping);
+            let polygons = crate::sat::Polygons::new(&pair, pa, pb);
+            let axes = crate::sat::Axes::of(&polygons);
+            if axes.separated() {
+                return match self.small_polygons_distance(&pair, &polygons, &axes) {
+                    Some(s) => Some(apart(s)),
+                    None => self.penetration_of(&pair).map(overlapping),
+                };
             }
+            if P::SEPARATING_AXES {
+                let (depth, normal) = axes.penetration();
+                return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+            }
+            return self.penetration_of(&pair).map(overlapping);
         }
         // Polygons past eight vertices: the penetration query's walked
         // answer, asked once. Overlapping by far more than rounding, the
@@ -546,6 +589,11 @@ impl<R: Real, P> Gjk<R, P> {
             // cached axis or triangle where either still decides).
             if cache.intersects_small(&pair, pa, pb).intersecting {
                 return None;
+            }
+            // Apart, and the cached axis separates them: where its edge and
+            // nearest vertex are still the closest features, the distance.
+            if let Some(found) = cache.face_and_vertex(&pair, pa, pb) {
+                return Some(closed_form_separation(&pair, found));
             }
             let start = cache.simplex(&pair, pa, pb);
             let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -1007,15 +1055,34 @@ where
         let centre = pair.b_to_pair(V2::from_glam(pair.b_center()));
         (normal, point, centre - normal * radius_b)
     };
-    Some(Separation {
-        distance: distance - (radius_a + radius_b),
+    Some(closed_form_separation(pair, (distance - (radius_a + radius_b), normal, point_a, point_b)))
+}
+
+/// The separation a closed form found, exact, with no iteration: the
+/// distance, the unit normal from A towards B and the closest points on A
+/// and B, all in the pair frame (a point core against a small polygon; two
+/// small polygons whose closest features are an edge and a vertex,
+/// [`crate::sat::Polygons::face_and_vertex`]).
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn closed_form_separation<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    (distance, normal, point_a, point_b): crate::sat::FaceAndVertex<R>,
+) -> Separation<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    Separation {
+        distance,
         normal: pair.to_world_vector(normal),
         point_a: pair.to_world_point(point_a),
         point_b: pair.to_world_point(point_b),
         error_bound: R::ZERO,
         iterations: 1,
         status: Status::Converged,
-    })
+    }
 }
 
 /// The penetration the separating axes found: exact, with no iteration.

@@ -84,6 +84,11 @@ fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
     (normals, least)
 }
 
+/// The distance of two polygons whose closest features are an edge and a
+/// vertex, the unit normal from A towards B, and the closest points on A and
+/// on B ([`Polygons::face_and_vertex`]).
+pub(crate) type FaceAndVertex<R> = (R, V2<R>, V2<R>, V2<R>);
+
 /// The pair's two small polygons, both in A's frame relative to A's
 /// reference point: what every axis is measured on.
 pub(crate) struct Polygons<R> {
@@ -113,6 +118,38 @@ impl<R: Real> Polygons<R> {
         };
         let (ia, ib) = (along(&self.a, -d), along(&self.b, d));
         (self.b.v[ib] - self.a.v[ia], ((ia as u32) << 16) | ib as u32)
+    }
+
+    /// The distance of the polygons where their closest features are an
+    /// edge and a vertex whose foot lies on it (the common case), from axis
+    /// `slot` (A's edges, then B's): an axis whose nearest vertex has its
+    /// foot on the edge separates them by exactly their distance, as the
+    /// foot is a point of the edge's polygon that far from the vertex (no
+    /// axis separates them by more). The distance, the unit normal from A
+    /// towards B, and the closest points on A and on B; `None` where the
+    /// axis does not separate them or the vertex's foot falls off the edge
+    /// (two vertices closest, or another axis's edge).
+    #[inline(always)]
+    pub fn face_and_vertex(&self, slot: usize) -> Option<FaceAndVertex<R>> {
+        let of_a = slot < M;
+        let (own, other) = if of_a { (&self.a, &self.b) } else { (&self.b, &self.a) };
+        let edge = slot % M;
+        let outward = own.normal(edge);
+        // The other's vertex nearest the edge's line (the first, as in every
+        // least here), and its offset along the edge from the edge's start.
+        let nearest = other.v[first_max(&other.v.map(|v| -v.dot(outward)))];
+        // The slot after the last vertex holds the first: the closing edge
+        // ends there.
+        let (start, end) = (own.v[edge], own.v[(edge + 1) % M]);
+        let along = (nearest - start).dot(end - start);
+        let distance = scaled_separation(outward, reach(own, other, outward, edge));
+        let on_edge = along >= R::ZERO && along <= (end - start).length_squared();
+        if !(distance > R::ZERO && edge < own.len && slot < 2 * M && on_edge) {
+            return None;
+        }
+        let unit = outward.try_normalize_inlined()?;
+        let foot = nearest - unit * distance;
+        Some(if of_a { (distance, unit, foot, nearest) } else { (distance, -unit, nearest, foot) })
     }
 
     /// Axis `slot` alone (A's edges first, then B's, as in [`Axes`]): its
@@ -220,6 +257,24 @@ impl<R: Real> Axes<R> {
     /// (a cheap pick: any axis that separates proves it).
     pub fn most_separating(&self) -> usize {
         first_max(&self.least)
+    }
+
+    /// The axis that separates the polygons the most along its unit
+    /// normal, picked by the separation's square over the normal's (no
+    /// square root; a pick that under- or overflows is merely not the best,
+    /// which [`Polygons::face_and_vertex`] does not rely on).
+    #[inline(always)]
+    pub fn most_separating_by_square(&self) -> usize {
+        let key: [R; 2 * M] = core::array::from_fn(|i| {
+            let (least, nn) = (self.least[i], self.normals[i].length_squared());
+            let key = least * least / nn;
+            if least > R::ZERO && nn > R::ZERO {
+                key
+            } else {
+                -R::INFINITY
+            }
+        });
+        first_max(&key)
     }
 
     /// [`penetration`](Self::penetration), with the `count` axes of the

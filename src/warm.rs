@@ -121,7 +121,7 @@ mod small {
     use crate::polytope::first_max;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
-    use crate::sat::{penetration_along, scaled_separation, separates_by, Axes, Polygons};
+    use crate::sat::{penetration_along, scaled_separation, separates_by, Axes, FaceAndVertex, Polygons};
     use crate::shape::SupportMap;
     use crate::simplex::{Payload, Simplex, Vertex};
 
@@ -275,6 +275,32 @@ mod small {
                 self.refill_triangle(pair, &polygons);
             }
             Detection { intersecting: !separated, iterations: 1, status: Status::Converged }
+        }
+
+        /// The distance of two small polygons apart (the cached intersection
+        /// test says so first, which leaves a separating axis in the cache)
+        /// where their closest features are an edge and a vertex: from the
+        /// cached axis, else from the one that separates them the most, kept
+        /// for the next step ([`Polygons::face_and_vertex`]). `None` where
+        /// two vertices are closest: GJK answers.
+        pub(crate) fn face_and_vertex<A, B>(
+            &mut self,
+            pair: &Pair<'_, R, A, B>,
+            a: &[V2<R>],
+            b: &[V2<R>],
+        ) -> Option<FaceAndVertex<R>>
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
+            let polygons = Polygons::new(pair, a, b);
+            if let Some(found) = polygons.face_and_vertex(self.separating as usize) {
+                return Some(found);
+            }
+            let best = Axes::of(&polygons).most_separating_by_square();
+            let found = polygons.face_and_vertex(best)?;
+            self.separating = best as u32;
+            Some(found)
         }
 
         /// The last leading axes, if the motion since cannot have let any

@@ -11,8 +11,12 @@
 //! overlapping and many touching. Every verdict beyond 8 eps L must be
 //! right, every depth within 8 eps L (plus the placement's rounding) of the
 //! exact one, and the normal must give that depth: the overlap of the two
-//! placed polygons along it equals the depth. The same pairs through
-//! `dyn SupportMap` (GJK and EPA) must agree with them within those bounds.
+//! placed polygons along it equals the depth. The distance of small polygons
+//! (known types: the axes' verdict, and their closed form where an edge and a
+//! vertex are closest) must be within the bound (and its error bound) of the exact one,
+//! its normal must part the polygons by it, and its points lie on their
+//! supports that far apart along it. The same pairs through `dyn SupportMap`
+//! (GJK and EPA) must agree with them within those bounds.
 
 #[path = "common/geo.rs"]
 mod geo;
@@ -162,6 +166,35 @@ macro_rules! sat_suite {
                 }
                 if let (Some(f), Some(s)) = (fast, slow) {
                     prop_assert!((f.depth as f64 - s.depth as f64).abs() <= 2.0 * bound);
+                }
+                // The distance of small polygons (the larger ones' is GJK's,
+                // checked in tests/properties.rs).
+                let small = $capacity == 8;
+                let fast = gjk.distance(&poly_a, &ta, &poly_b, &tb);
+                let slow = gjk.distance(da, &ta, db, &tb);
+                // Known types: the intersection test's verdict, as both come
+                // from the axes.
+                prop_assert_eq!(fast.is_none(), gjk.intersects(&poly_a, &ta, &poly_b, &tb).intersecting);
+                for (separation, path) in [(fast, "known types"), (slow, "dyn")].into_iter().filter(|_| small) {
+                    let Some(sep) = separation else {
+                        prop_assert!(truth.signed_distance <= bound, "{path}: no distance, exact {}", truth.signed_distance);
+                        continue;
+                    };
+                    let (got, allowed) = (sep.distance as f64, bound + sep.error_bound as f64);
+                    prop_assert!((got - truth.signed_distance).abs() <= allowed, "{path}: distance {got}, exact {}, bound {allowed}", truth.signed_distance);
+                    // The normal parts them by the distance, and the points
+                    // lie on the shapes that far apart along it.
+                    let n = [sep.normal.x as f64, sep.normal.y as f64];
+                    let gap = -reach(&wb, 0.0, [-n[0], -n[1]]) - reach(&wa, 0.0, n);
+                    prop_assert!((gap - got).abs() <= 2.0 * allowed, "{path}: gap {gap} along the normal, distance {got}");
+                    let (pa, pb) = (sep.point_a, sep.point_b);
+                    let where_ = 4.0 * eps * (pa.x.abs() + pa.y.abs() + pb.x.abs() + pb.y.abs()) as f64;
+                    let apart = [pb.x as f64 - pa.x as f64 - got * n[0], pb.y as f64 - pa.y as f64 - got * n[1]];
+                    prop_assert!(apart[0].hypot(apart[1]) <= 4.0 * allowed + where_, "{path}: points {:?} {:?}, distance {got}", pa, pb);
+                    let (ra, rb) = (reach(&wa, 0.0, n), reach(&wb, 0.0, [-n[0], -n[1]]));
+                    let (on_a, on_b) = (pa.x as f64 * n[0] + pa.y as f64 * n[1], -(pb.x as f64 * n[0] + pb.y as f64 * n[1]));
+                    prop_assert!((on_a - ra).abs() <= 2.0 * allowed + where_, "{path}: A's point {on_a} off its support {ra}");
+                    prop_assert!((on_b - rb).abs() <= 2.0 * allowed + where_, "{path}: B's point {on_b} off its support {rb}");
                 }
             }
         }
