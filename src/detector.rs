@@ -568,8 +568,10 @@ impl<R: Real, P> Gjk<R, P> {
     /// updating it, within the same guarantees (its error bound and status
     /// are its own). For polygons of up to eight vertices the verdict is
     /// the cold query's, from the cached axis or triangle where either
-    /// still decides, and GJK starts from the last simplex, its points
-    /// measured again; other shapes start GJK along the last normal.
+    /// still decides; apart, the distance is read off the cached axis where
+    /// its edge and nearest vertex are still the closest features, else GJK
+    /// starts from the last simplex, its points measured again. Other
+    /// shapes start GJK along the last normal.
     pub fn distance_cached<A, B>(
         &self,
         a: &A,

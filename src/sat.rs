@@ -197,6 +197,57 @@ where
     reach.1 > margin * (reach.0.x.abs() + reach.0.y.abs())
 }
 
+/// [`Polygons::face_and_vertex`] of axis `slot`, measured as
+/// [`separates_by`] measures it: in the frame of the edge's polygon, its
+/// normal turned once and only the nearest vertex placed, no polygon: what
+/// a cached axis costs to ask again.
+pub(crate) fn face_and_vertex_by<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    a: &[V2<R>],
+    b: &[V2<R>],
+    slot: usize,
+) -> Option<FaceAndVertex<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let edge = |v: &[V2<R>], i: usize| Some((*v.get(i)?, *v.get(i + 1).or(v.first())?));
+    // The first vertex of the least dot product along `d`, and that product.
+    let nearest = |v: &[V2<R>], d: V2<R>| {
+        let dots: [R; M] = core::array::from_fn(|i| v.get(i).map_or(-R::INFINITY, |&p| -d.dot(p)));
+        let j = first_max(&dots);
+        (v[j], -dots[j])
+    };
+    // On the edge from `p` to `q` (as its foot along the edge shows), `v`'s
+    // separation from the edge's line along the outward normal `n`, and the
+    // foot; all in the pair frame.
+    let on_edge = |p: V2<R>, q: V2<R>, n: V2<R>, v: V2<R>, reach: R| {
+        let along = (v - p).dot(q - p);
+        let distance = scaled_separation(n, reach);
+        let unit = n.try_normalize_inlined()?;
+        let found = distance > R::ZERO && along >= R::ZERO && along <= (q - p).length_squared();
+        found.then(|| (distance, unit, v - unit * distance))
+    };
+    let offset = pair.pose().2;
+    if slot < M {
+        let (p, q) = edge(a, slot)?;
+        let n = (q - p).perp_cw();
+        let (v, least) = nearest(b, pair.pair_vector_to_b(n));
+        let v = pair.b_to_pair(v);
+        let (distance, unit, foot) = on_edge(p, q, n, v, least + n.dot(offset) - n.dot(p))?;
+        Some((distance, unit, foot, v))
+    } else {
+        let (p, q) = edge(b, slot.checked_sub(M)?)?;
+        let n = (q - p).perp_cw();
+        let m = pair.b_vector_to_pair(n);
+        let (v, least) = nearest(a, m);
+        let (p_placed, q_placed) = (pair.b_to_pair(p), pair.b_to_pair(q));
+        let (distance, unit, foot) = on_edge(p_placed, q_placed, m, v, least - n.dot(p) - m.dot(offset))?;
+        Some((distance, -unit, v, foot))
+    }
+}
+
 /// What the separating axes say about two polygon cores.
 pub(crate) struct Axes<R> {
     normals: [V2<R>; 2 * M],

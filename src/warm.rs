@@ -121,7 +121,9 @@ mod small {
     use crate::polytope::first_max;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
-    use crate::sat::{penetration_along, scaled_separation, separates_by, Axes, FaceAndVertex, Polygons};
+    use crate::sat::{
+        face_and_vertex_by, penetration_along, scaled_separation, separates_by, Axes, FaceAndVertex, Polygons,
+    };
     use crate::shape::SupportMap;
     use crate::simplex::{Payload, Simplex, Vertex};
 
@@ -293,10 +295,10 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            let polygons = Polygons::new(pair, a, b);
-            if let Some(found) = polygons.face_and_vertex(self.separating as usize) {
+            if let Some(found) = face_and_vertex_by(pair, a, b, self.separating as usize) {
                 return Some(found);
             }
+            let polygons = Polygons::new(pair, a, b);
             let best = Axes::of(&polygons).most_separating_by_square();
             let found = polygons.face_and_vertex(best)?;
             self.separating = best as u32;

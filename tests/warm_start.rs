@@ -261,6 +261,24 @@ macro_rules! warm_suite {
                         let warm = gjk.distance_cached(a, &ta, b, &tb, cache);
                         if small {
                             assert_eq!(warm.is_some(), cold_distance.is_some(), "{}", ctx("distance verdict"));
+                            // Apart by more than rounding: one closest pair's
+                            // direction, the cold query's normal.
+                            if let (Some(w), Some(c)) = (warm, cold_distance) {
+                                let (nw, nc) = (pt(w.normal), pt(c.normal));
+                                let (pa, pb) = (pt(w.point_a), pt(w.point_b));
+                                let d = w.distance as f64;
+                                let off = (pb[0] - pa[0] - d * nw[0]).hypot(pb[1] - pa[1] - d * nw[1]);
+                                let where_ = 4.0 * EPS * (norm(pa) + norm(pb));
+                                assert!(off <= 4.0 * tol + where_, "{}: points {w:?}", ctx("distance points"));
+                                if c.distance as f64 > 1e3 * tol {
+                                    let turn = (nw[0] - nc[0]).hypot(nw[1] - nc[1]);
+                                    assert!(
+                                        turn <= 1e3 * tol / c.distance as f64,
+                                        "{}: {w:?} against {c:?}",
+                                        ctx("distance normal")
+                                    );
+                                }
+                            }
                         }
                         match warm {
                             Some(s) => {
