@@ -398,12 +398,14 @@ impl<R: Real, P> Gjk<R, P> {
     {
         // Bare metal and wasm ask the two queries in turn, which keeps both
         // the deepest frame and the module smaller than one shared GJK run.
+        // An early return, not a `match`: that held both frames' results
+        // in this one, and deepened the manifold's stack.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         {
             if let Some(s) = in_own_frame(|| self.distance(a, ta, b, tb)) {
                 return Some(apart(s));
             }
-            return in_own_frame(|| self.penetration(a, ta, b, tb)).map(overlapping);
+            in_own_frame(|| self.penetration(a, ta, b, tb)).map(overlapping)
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         self.contact_of(Pair::new(a, ta, b, tb))
