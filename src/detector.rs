@@ -481,14 +481,15 @@ impl<R: Real, P> Gjk<R, P> {
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
             CoreContact::Apart(s) => {
-                // Shapes the closed form finds within reach, which the
-                // distance query then calls touching, can part from GJK only
+                // A segment core and a small polygon that the closed form
+                // finds within reach, which the distance query then calls
+                // touching (small polygons were decided above), part from GJK only
                 // within rounding of touching (a margin far above it here):
                 // the penetration query's answer is then the one to give.
                 let offset = pair.pose().2;
                 let reach = R::TWO * pair.scale() + offset.x.abs() + offset.y.abs() + pair.radius();
                 let near = s.distance <= s.error_bound + R::from_u32(1024) * R::EPSILON * reach;
-                if near && within_reach_in_closed_form(&pair) {
+                if near && segment_within_small_polygon(&pair) == Some(true) {
                     return self.penetration_of(&pair).map(overlapping);
                 }
                 Some(apart(s))
@@ -992,26 +993,6 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
     } else {
         cap
     }
-}
-
-/// Whether the cores are within reach (the radii) where a closed form
-/// decides it with no iteration: two small polygons by their separating
-/// axes, a segment core and a small polygon by
-/// [`segment_within_small_polygon`]. The distance query answers `None` for
-/// such pairs before any GJK: most pairs in a scene overlap, and GJK would
-/// only find that out in several iterations.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-#[inline(always)]
-fn within_reach_in_closed_form<R, A, B>(pair: &Pair<'_, R, A, B>) -> bool
-where
-    R: Real,
-    A: SupportMap<R> + ?Sized,
-    B: SupportMap<R> + ?Sized,
-{
-    if let Some((pa, pb)) = pair.small_polygons() {
-        return !crate::sat::Axes::new(pair, pa, pb).separated();
-    }
-    segment_within_small_polygon(pair) == Some(true)
 }
 
 /// Whether a segment core (a capsule's, a segment's) lies within the

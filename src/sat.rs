@@ -141,14 +141,10 @@ impl<R: Real> Polygons<R> {
         // The slot after the last vertex holds the first: the closing edge
         // ends there.
         let (start, end) = (own.v[edge], own.v[(edge + 1) % M]);
-        let along = (nearest - start).dot(end - start);
-        let distance = scaled_separation(outward, reach(own, other, outward, edge));
-        let on_edge = along >= R::ZERO && along <= (end - start).length_squared();
-        if !(distance > R::ZERO && edge < own.len && slot < 2 * M && on_edge) {
+        if !(edge < own.len && slot < 2 * M) {
             return None;
         }
-        let unit = outward.try_normalize_inlined()?;
-        let foot = nearest - unit * distance;
+        let (distance, unit, foot) = foot_on_edge(start, end, outward, nearest, reach(own, other, outward, edge))?;
         Some(if of_a { (distance, unit, foot, nearest) } else { (distance, -unit, nearest, foot) })
     }
 
@@ -197,6 +193,19 @@ where
     reach.1 > margin * (reach.0.x.abs() + reach.0.y.abs())
 }
 
+/// Where vertex `v` lies beyond the edge from `p` to `q` (outward normal
+/// `n`, not unit; `reach` the separation times its length) with its foot on
+/// the edge: the separation, the unit normal and the foot. `None` where it
+/// is not beyond, or its foot falls off the edge.
+#[inline(always)]
+fn foot_on_edge<R: Real>(p: V2<R>, q: V2<R>, n: V2<R>, v: V2<R>, reach: R) -> Option<(R, V2<R>, V2<R>)> {
+    let along = (v - p).dot(q - p);
+    let distance = scaled_separation(n, reach);
+    let unit = n.try_normalize_inlined()?;
+    let found = distance > R::ZERO && along >= R::ZERO && along <= (q - p).length_squared();
+    found.then(|| (distance, unit, v - unit * distance))
+}
+
 /// [`Polygons::face_and_vertex`] of axis `slot`, measured as
 /// [`separates_by`] measures it: in the frame of the edge's polygon, its
 /// normal turned once and only the nearest vertex placed, no polygon: what
@@ -219,23 +228,13 @@ where
         let j = first_max(&dots);
         (v[j], -dots[j])
     };
-    // On the edge from `p` to `q` (as its foot along the edge shows), `v`'s
-    // separation from the edge's line along the outward normal `n`, and the
-    // foot; all in the pair frame.
-    let on_edge = |p: V2<R>, q: V2<R>, n: V2<R>, v: V2<R>, reach: R| {
-        let along = (v - p).dot(q - p);
-        let distance = scaled_separation(n, reach);
-        let unit = n.try_normalize_inlined()?;
-        let found = distance > R::ZERO && along >= R::ZERO && along <= (q - p).length_squared();
-        found.then(|| (distance, unit, v - unit * distance))
-    };
     let offset = pair.pose().2;
     if slot < M {
         let (p, q) = edge(a, slot)?;
         let n = (q - p).perp_cw();
         let (v, least) = nearest(b, pair.pair_vector_to_b(n));
         let v = pair.b_to_pair(v);
-        let (distance, unit, foot) = on_edge(p, q, n, v, least + n.dot(offset) - n.dot(p))?;
+        let (distance, unit, foot) = foot_on_edge(p, q, n, v, least + n.dot(offset) - n.dot(p))?;
         Some((distance, unit, foot, v))
     } else {
         let (p, q) = edge(b, slot.checked_sub(M)?)?;
@@ -243,7 +242,7 @@ where
         let m = pair.b_vector_to_pair(n);
         let (v, least) = nearest(a, m);
         let (p_placed, q_placed) = (pair.b_to_pair(p), pair.b_to_pair(q));
-        let (distance, unit, foot) = on_edge(p_placed, q_placed, m, v, least - n.dot(p) - m.dot(offset))?;
+        let (distance, unit, foot) = foot_on_edge(p_placed, q_placed, m, v, least - n.dot(p) - m.dot(offset))?;
         Some((distance, -unit, v, foot))
     }
 }

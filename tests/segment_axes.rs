@@ -185,7 +185,7 @@ fn capsule_intersection_test_matches_the_exact_verdict() {
                     continue;
                 };
                 // One end around the polygon; the other along a random
-                // direction, or along the nearest edge (parallel faces).
+                // direction, or along one of its edges (parallel faces).
                 let round = |p: Pt| [p[0] as R as f64, p[1] as R as f64];
                 let (t, reach) = (rng.range(0.0, TAU), rng.range(0.0, 3.0));
                 let s0 = round([reach * t.cos(), reach * t.sin()]);

@@ -172,9 +172,12 @@ macro_rules! sat_suite {
                 let small = $capacity == 8;
                 let fast = gjk.distance(&poly_a, &ta, &poly_b, &tb);
                 let slow = gjk.distance(da, &ta, db, &tb);
-                // Known types: the intersection test's verdict, as both come
-                // from the axes.
-                prop_assert_eq!(fast.is_none(), gjk.intersects(&poly_a, &ta, &poly_b, &tb).intersecting);
+                // Known small polygons: the intersection test's verdict, as
+                // both come from the axes (larger ones' are two GJK runs,
+                // which may part within rounding of touching).
+                if small {
+                    prop_assert_eq!(fast.is_none(), gjk.intersects(&poly_a, &ta, &poly_b, &tb).intersecting);
+                }
                 for (separation, path) in [(fast, "known types"), (slow, "dyn")].into_iter().filter(|_| small) {
                     let Some(sep) = separation else {
                         prop_assert!(truth.signed_distance <= bound, "{path}: no distance, exact {}", truth.signed_distance);
