@@ -376,7 +376,12 @@ mod small {
                 rest &= rest.wrapping_sub(1);
                 slot
             });
-            let axes = slots.map(|slot| polygons.axis(slot));
+            // A loop, not `from_fn`: its closure was called out of line,
+            // each axis's result passed back through memory.
+            let mut axes = [(V2::zero(), R::ZERO, false); LEADERS];
+            for (axis, &slot) in axes.iter_mut().zip(&slots) {
+                *axis = polygons.axis(slot);
+            }
             if !axes.iter().all(|axis| axis.2) {
                 return None;
             }
@@ -386,9 +391,25 @@ mod small {
                 (self.separating, self.leaders) = (slots[k] as u32, 0);
                 return Some(None);
             }
-            let separation = axes.map(|(normal, least, _)| scaled_separation(normal, least));
+            // Every leader's separation and unit normal side by side (lanes
+            // of the same operations, which the compiler packs), rather than
+            // the winner's normal after the pick: that waited on a square
+            // root and two divisions in a row.
+            let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
+            let least = axes.map(|axis| axis.1);
+            let separation: [R; LEADERS] = core::array::from_fn(|k| scaled_separation(V2::new(nx[k], ny[k]), least[k]));
+            let length: [R; LEADERS] = core::array::from_fn(|k| (nx[k] * nx[k] + ny[k] * ny[k]).sqrt());
+            let ux: [R; LEADERS] = core::array::from_fn(|k| nx[k] / length[k]);
+            let uy: [R; LEADERS] = core::array::from_fn(|k| ny[k] / length[k]);
             let best = first_max(&separation);
-            Some(Some(penetration_along(separation[best], axes[best].0)))
+            let normal = axes[best].0;
+            // The unit normal as `penetration_along` gives it, where its
+            // common case (no tiny or non-finite normal) holds.
+            let m = normal.max_abs();
+            if m >= R::EPSILON * R::EPSILON && m.is_finite() {
+                return Some(Some((R::ZERO - separation[best], V2::new(ux[best], uy[best]))));
+            }
+            Some(Some(penetration_along(separation[best], normal)))
         }
 
         /// The penetration of two small polygons (`None`: apart), as the
@@ -416,14 +437,17 @@ mod small {
                 iterations,
                 status: Status::Converged,
             };
-            let (_, least, exists) = polygons.axis(self.separating as usize);
-            if exists & (least > R::ZERO) {
-                return None;
-            }
+            // The leaders first: they are kept for overlapping polygons,
+            // and where they hold, no axis outside them (the cached
+            // separating one included) can change their answer.
             if let Some(leaders) = self.leaders_hold(pair, a, b) {
                 if let Some(answer) = self.by_leaders(&polygons, leaders) {
                     return answer.map(|answer| found(answer, 0));
                 }
+            }
+            let (_, least, exists) = polygons.axis(self.separating as usize);
+            if exists & (least > R::ZERO) {
+                return None;
             }
             let axes = Axes::of(&polygons);
             if axes.separated() {
