@@ -160,8 +160,10 @@ impl<R: Real, P> Gjk<R, P> {
             let polygons = crate::sat::Polygons::new(pair, pa, pb);
             return self.small_polygons_distance(pair, &polygons, &crate::sat::Axes::of(&polygons));
         }
+        // Shapes whose bounding circles are apart need no verdict: GJK
+        // finds their distance, and the closed form would only add its cost.
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if segment_within_small_polygon(pair) == Some(true) {
+        if !pair.bounds_apart() && segment_within_small_polygon(pair) == Some(true) {
             return None;
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;

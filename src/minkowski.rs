@@ -390,6 +390,15 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.rotated.then_some((self.cos, self.sin))
     }
 
+    /// Whether the shapes' bounding circles (about their centers) are
+    /// apart by more than rounding: then so are the shapes.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn bounds_apart(&self) -> bool {
+        let reach = self.a.bounding_radius() + self.b.bounding_radius();
+        self.centers.length_squared() > reach * reach * (R::ONE + R::from_u32(16) * R::EPSILON)
+    }
+
     /// Each shape's bounding radius about its center.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
