@@ -321,7 +321,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn segment_in_small_polygon(&self) -> Option<([V2<R>; 2], Vertices<'s, R>)> {
         let (segment, polygon, segment_is_a) = self.segment_and_small_polygon()?;
         let place = |p: V2<R>| if segment_is_a { self.inverse_rotate(p - self.offset) } else { self.b_to_pair(p) };
-        Some((segment.map(place), polygon))
+        // Not `map`: the compiler called that closure out of line.
+        Some(([place(segment[0]), place(segment[1])], polygon))
     }
 
     /// A's core vertices (in the pair frame, which is A's), where A lends

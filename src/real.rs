@@ -358,12 +358,15 @@ mod sse2 {
             [pair(xs, 0), pair(xs, 2), pair(xs, 4), pair(xs, 6)],
             [pair(ys, 0), pair(ys, 2), pair(ys, 4), pair(ys, 6)],
         );
-        core::array::from_fn(|i| {
+        let axis = |i: usize| {
             let (dx, dy) = (_mm_set1_pd(nx[i]), _mm_set1_pd(ny[i]));
             let dot = |k: usize| _mm_add_pd(_mm_mul_pd(dx, x[k]), _mm_mul_pd(dy, y[k]));
             let m = _mm_min_pd(_mm_min_pd(dot(0), dot(1)), _mm_min_pd(dot(2), dot(3)));
             _mm_cvtsd_f64(_mm_min_pd(m, _mm_shuffle_pd::<0b01>(m, m)))
-        })
+        };
+        // Spelt out, not `from_fn`: the compiler called that closure out of
+        // line at some call sites, once an axis.
+        [axis(0), axis(1), axis(2), axis(3), axis(4), axis(5), axis(6), axis(7)]
     }
 
     #[target_feature(enable = "sse2")]

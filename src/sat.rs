@@ -37,7 +37,12 @@ impl<R: Real> Padded<R> {
     fn new(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>, rotation: Option<(R, R)>) -> Self {
         let own_first = vertices.first().copied().unwrap_or_default();
         let own: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).copied().unwrap_or(own_first));
-        let v = own.map(place);
+        // A loop, not `map`: the compiler called that closure out of line,
+        // once a vertex.
+        let mut v = own;
+        for p in &mut v {
+            *p = place(*p);
+        }
         let (xs, ys) = (core::array::from_fn(|i| v[i].x), core::array::from_fn(|i| v[i].y));
         // The edge turned clockwise, the polygon being counter-clockwise.
         // The slot after the last vertex holds the first, so the closing

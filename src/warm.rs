@@ -186,7 +186,9 @@ mod small {
 
     impl<R: Real> PairCache<R> {
         /// Vertex `id` of the Minkowski difference of the pair's small
-        /// polygons, measured now; `None` for ids out of range.
+        /// polygons, measured now; `None` for ids out of range. Inlined:
+        /// out of line, each of a triangle's three came back through memory.
+        #[inline(always)]
         fn vertex<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], id: u32) -> Option<MinkowskiVertex<R>>
         where
             A: SupportMap<R> + ?Sized,
@@ -213,7 +215,10 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            let [p, q, r] = self.ids.map(|id| Self::vertex(pair, a, b, id).map(|v| v.w));
+            let w = |id| Self::vertex(pair, a, b, id).map(|v| v.w);
+            // Spelt out, not `map`: the compiler called that closure out of
+            // line, once a vertex.
+            let [p, q, r] = [w(self.ids[0]), w(self.ids[1]), w(self.ids[2])];
             let (Some(p), Some(q), Some(r)) = (p, q, r) else { return false };
             let size = Self::size(pair);
             surely_encloses([p, q, r], R::from_u32(ROUNDING) * R::EPSILON * size, size)
@@ -371,13 +376,13 @@ mod small {
             // Set bits in ascending order: ties go to the first, as in `Axes`.
             let first = leaders.trailing_zeros() as usize;
             let mut rest = leaders;
-            let slots: [usize; LEADERS] = core::array::from_fn(|_| {
-                let slot = core::hint::select_unpredictable(rest == 0, first, rest.trailing_zeros() as usize);
+            // Loops, not `from_fn`: the compiler called its closure out of
+            // line, once a slot.
+            let mut slots = [first; LEADERS];
+            for slot in &mut slots {
+                *slot = core::hint::select_unpredictable(rest == 0, first, rest.trailing_zeros() as usize);
                 rest &= rest.wrapping_sub(1);
-                slot
-            });
-            // A loop, not `from_fn`: its closure was called out of line,
-            // each axis's result passed back through memory.
+            }
             let mut axes = [(V2::zero(), R::ZERO, false); LEADERS];
             for (axis, &slot) in axes.iter_mut().zip(&slots) {
                 *axis = polygons.axis(slot);
@@ -397,7 +402,10 @@ mod small {
             // root and two divisions in a row.
             let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
             let least = axes.map(|axis| axis.1);
-            let separation: [R; LEADERS] = core::array::from_fn(|k| scaled_separation(V2::new(nx[k], ny[k]), least[k]));
+            let mut separation = least;
+            for (k, separation) in separation.iter_mut().enumerate() {
+                *separation = scaled_separation(V2::new(nx[k], ny[k]), least[k]);
+            }
             let length: [R; LEADERS] = core::array::from_fn(|k| (nx[k] * nx[k] + ny[k] * ny[k]).sqrt());
             let ux: [R; LEADERS] = core::array::from_fn(|k| nx[k] / length[k]);
             let uy: [R; LEADERS] = core::array::from_fn(|k| ny[k] / length[k]);
