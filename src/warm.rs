@@ -396,10 +396,10 @@ mod small {
                 (self.separating, self.leaders) = (slots[k] as u32, 0);
                 return Some(None);
             }
-            // Every leader's separation and unit normal side by side (lanes
-            // of the same operations, which the compiler packs), rather than
-            // the winner's normal after the pick: that waited on a square
-            // root and two divisions in a row.
+            // Every leader's separation and unit normal, independent of one
+            // another, before the pick, rather than the winner's normal
+            // after it: that waited on a square root and two divisions in
+            // a row.
             let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
             let least = axes.map(|axis| axis.1);
             let mut separation = least;
