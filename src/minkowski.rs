@@ -396,7 +396,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn bounds_apart(&self) -> bool {
-        let reach = self.a.bounding_radius() + self.b.bounding_radius();
+        let (radius_a, radius_b) = self.bounding_radii();
+        let reach = radius_a + radius_b;
         self.centers.length_squared() > reach * reach * (R::ONE + R::from_u32(16) * R::EPSILON)
     }
 

@@ -400,19 +400,20 @@ mod small {
             // another, before the pick, rather than the winner's normal
             // after it: that waited on a square root and two divisions in
             // a row.
-            let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
-            let least = axes.map(|axis| axis.1);
-            let mut separation = least;
-            for (k, separation) in separation.iter_mut().enumerate() {
-                *separation = scaled_separation(V2::new(nx[k], ny[k]), least[k]);
+            let mut separation = [R::ZERO; LEADERS];
+            for (separation, &(normal, least, _)) in separation.iter_mut().zip(&axes) {
+                *separation = scaled_separation(normal, least);
             }
+            let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
             let length: [R; LEADERS] = core::array::from_fn(|k| (nx[k] * nx[k] + ny[k] * ny[k]).sqrt());
             let ux: [R; LEADERS] = core::array::from_fn(|k| nx[k] / length[k]);
             let uy: [R; LEADERS] = core::array::from_fn(|k| ny[k] / length[k]);
             let best = first_max(&separation);
             let normal = axes[best].0;
             // The unit normal as `penetration_along` gives it, where its
-            // common case (no tiny or non-finite normal) holds.
+            // common case (no tiny or non-finite normal) holds: computed in
+            // every lane without its branches, which asked of each leader
+            // cost more than the lanes save.
             let m = normal.max_abs();
             if m >= R::EPSILON * R::EPSILON && m.is_finite() {
                 return Some(Some((R::ZERO - separation[best], V2::new(ux[best], uy[best]))));
