@@ -253,10 +253,9 @@ mod sse2 {
         });
         let wanted = _mm_set1_pd(top);
         let whole = (2 * (v.len() / 4)).min(kept.len());
-        if let Some(i) =
-            first_match(kept.get(..whole).unwrap_or_default(), 2, |pair| _mm_movemask_pd(_mm_cmpeq_pd(pair, wanted)))
-        {
-            return i;
+        let equal = equal_f64(&kept, whole, wanted);
+        if equal != 0 {
+            return equal.trailing_zeros() as usize;
         }
         let rest = v.get(2 * whole..).unwrap_or_default();
         let mut pairs = rest.chunks_exact(2);
@@ -277,6 +276,35 @@ mod sse2 {
     fn first_match<T: Copy>(blocks: &[T], lanes: usize, mask: impl Fn(T) -> i32) -> Option<usize> {
         let matches = blocks.iter().enumerate().fold(0u64, |m, (k, &b)| m | u64::from(mask(b) as u32) << (lanes * k));
         (matches != 0).then(|| matches.trailing_zeros() as usize)
+    }
+
+    /// One bit a vertex, set where its dot (of the first `whole` kept)
+    /// equals `wanted`. Every 16 comparisons are packed into one mask moved
+    /// out of the vector unit, not one mask a pair of dots: moving the masks
+    /// out pair by pair was much of the f64 scan. In f32, whose masks carry
+    /// four dots each, the packing did not pay.
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn equal_f64(kept: &[__m128d; 32], whole: usize, wanted: __m128d) -> u64 {
+        let mut bits = 0u64;
+        for (g, eight) in kept.chunks_exact(8).take(whole.div_ceil(8)).enumerate() {
+            let equal = |i: usize| _mm_castpd_ps(_mm_cmpeq_pd(eight[i], wanted));
+            let halves = |i: usize| _mm_castps_si128(_mm_shuffle_ps::<0b11_01_11_01>(equal(i), equal(i + 1)));
+            let (low, high) = (_mm_packs_epi32(halves(0), halves(2)), _mm_packs_epi32(halves(4), halves(6)));
+            bits |= u64::from(_mm_movemask_epi8(_mm_packs_epi16(low, high)) as u16) << (16 * g);
+        }
+        bits & low_bits(2 * whole)
+    }
+
+    /// The lowest `n` bits set (all of them from 64 on): kept slots past
+    /// the vertices' hold zeros, which must not match a top of zero.
+    #[inline(always)]
+    fn low_bits(n: usize) -> u64 {
+        if n >= 64 {
+            u64::MAX
+        } else {
+            (1u64 << n) - 1
+        }
     }
 
     /// The first of `tail` (vertices from `start` on) whose dot is `top`;

@@ -213,3 +213,32 @@ macro_rules! dense_hull_suite {
 
 dense_hull_suite!(dense_hulls_hinted_f32, f32, Vec2);
 dense_hull_suite!(dense_hulls_hinted_f64, f64, DVec2);
+
+/// A support of dot exactly zero among the last vertices, which the scan
+/// checks one by one after its vector blocks: the blocks' unused slots hold
+/// zero dots too, and must not be taken for it. The points are not exact
+/// offsets of one another, so the polygon keeps them about the origin,
+/// where the lowest lies, at y = 0: along -y every other dot is negative.
+macro_rules! zero_top_suite {
+    ($name:ident, $r:ty, $vec:ident) => {
+        #[test]
+        fn $name() {
+            for count in 9..=64usize {
+                let pts: Vec<$vec> = (1..=count)
+                    .map(|k| {
+                        let t = -std::f64::consts::FRAC_PI_2 + std::f64::consts::TAU * k as f64 / count as f64;
+                        $vec::new((1.3 * t.cos()) as $r, (1.3 + 1.3 * t.sin()) as $r)
+                    })
+                    .collect();
+                let polygon = Polygon::<$r, 64>::new(&pts).unwrap();
+                let lowest = (0..count).find(|&i| polygon.vertex(i).unwrap().y == 0.0).expect("a vertex at y = 0");
+                assert!(polygon.reference_point() == $vec::ZERO, "{count} vertices: kept about the origin");
+                let (_, id) = polygon.support_feature($vec::new(0.0, -1.0), NO_FEATURE);
+                assert_eq!(id as usize, lowest, "{count} vertices");
+            }
+        }
+    };
+}
+
+zero_top_suite!(zero_top_past_the_blocks_f32, f32, Vec2);
+zero_top_suite!(zero_top_past_the_blocks_f64, f64, DVec2);
