@@ -6,7 +6,7 @@
 use core::cell::Cell;
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-use crate::polytope::{polytope_support_between, ARC_SEARCH_MIN, SMALL_POLYGON_MAX};
+use crate::polytope::{at, pair_support_near, polytope_support_between, ARC_SEARCH_MIN, SMALL_POLYGON_MAX};
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
@@ -252,16 +252,31 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         }
         let (ia, a) = polytope_support_between(a, -d, from >> 16, to >> 16);
         let (ib, b) = polytope_support_between(b, self.inverse_rotate(d), from & 0xFFFF, to & 0xFFFF);
+        self.vertex_of((ia, a), (ib, b))
+    }
+
+    /// The vertex of B - A from A's vertex `ia` (`a` in its frame) and B's
+    /// `ib`, which are the next supports' hints.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn vertex_of(&self, (ia, a): (usize, V2<R>), (ib, b): (usize, V2<R>)) -> MinkowskiVertex<R> {
         let (ia, ib) = (ia as u32, ib as u32);
         self.hint_a.set(ia);
         self.hint_b.set(ib);
         let b = self.rotate(b) + self.offset;
-        MinkowskiVertex { w: b - a, a, b, id: (ia << 16) | ib }
+        let id = if ia >= 0xFFFF || ib >= 0xFFFF { NO_ID } else { (ia << 16) | ib };
+        MinkowskiVertex { w: b - a, a, b, id }
     }
 
     /// The support point of B - A along `d`.
     #[inline(always)]
     pub fn support(&self, d: V2<R>) -> MinkowskiVertex<R> {
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((a, b)) = self.searched_polygon_cores() {
+            let (ia, ib) =
+                pair_support_near((a, -d, self.hint_a.get()), (b, self.inverse_rotate(d), self.hint_b.get()));
+            return self.vertex_of((ia, at(a, ia)), (ib, at(b, ib)));
+        }
         let (a, ia) = self.a.support_feature((-d).to_glam(), self.hint_a.get());
         let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam(), self.hint_b.get());
         self.hint_a.set(ia);
@@ -282,6 +297,19 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn small_polygons(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
         let small = |v: Vertices<'s, R>| v.len() <= SMALL_POLYGON_MAX;
         self.polygon_cores().filter(|&(a, b)| small(a) && small(b))
+    }
+
+    /// The two cores as polygons whose supports are searched
+    /// ([`SupportMap::searched_polygon_core`]), where both shapes' types
+    /// are known when the program is compiled.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn searched_polygon_cores(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
+        if !Self::shapes_known() {
+            return None;
+        }
+        let (a, b): (&'s A, &'s B) = (self.a, self.b);
+        Some((a.searched_polygon_core()?.vertices, b.searched_polygon_core()?.vertices))
     }
 
     /// The two cores as polygons of any size ([`SupportMap::polygon_core`]),

@@ -52,7 +52,7 @@ pub(crate) const fn searched<const N: usize>(len: usize) -> bool {
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn polytope_support<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>) -> (usize, V2<R>) {
-    if searched::<N>(vertices.len()) && !simd_scanned::<R>(vertices.len()) {
+    if searched_here::<R, N>(vertices.len()) {
         let (k, _) = hill_climb(vertices, d, angular_search(vertices, d), vertices.len());
         return (k, at(vertices, k));
     }
@@ -134,42 +134,114 @@ pub(crate) fn at<R: Real>(vertices: &[V2<R>], i: usize) -> V2<R> {
 /// the probes two halvings on, and once the bracket spans few lines, all of
 /// them.
 fn angular_search<R: Real>(vertices: &[V2<R>], d: V2<R>) -> usize {
+    let mut search = AngularSearch::begin(vertices, d);
+    search.narrow(vertices);
+    search.finish(vertices)
+}
+
+/// [`angular_search`] in its three steps, each of which waits for the
+/// lines the one before asked for: two polygons' searches, step by step
+/// side by side ([`pair_support_near`]), then wait for memory together.
+struct AngularSearch<R: Real> {
+    turning: Turning<R>,
+    /// The bracket of edges the tangent is reached in.
+    lo: usize,
+    hi: usize,
+}
+
+impl<R: Real> AngularSearch<R> {
     const SAMPLES: usize = 16;
     const SWEPT_LINES: usize = 16;
-    let n = vertices.len();
-    for j in 0..SAMPLES {
-        prefetch(vertices, j * n / SAMPLES);
+    const PER_LINE: usize = if 64 / core::mem::size_of::<V2<R>>() > 1 { 64 / core::mem::size_of::<V2<R>>() } else { 1 };
+
+    /// Asks for the coarse sample's lines.
+    #[inline(always)]
+    fn begin(vertices: &[V2<R>], d: V2<R>) -> Self {
+        let n = vertices.len();
+        for j in 0..Self::SAMPLES {
+            prefetch(vertices, j * n / Self::SAMPLES);
+        }
+        Self { turning: Turning::from(edge_from(vertices, 0), d), lo: 1, hi: n }
     }
-    let turning = Turning::from(edge_from(vertices, 0), d);
-    let per_line = (64 / core::mem::size_of::<V2<R>>()).max(1);
-    let (mut lo, mut hi) = (1, n);
-    let mut swept = false;
-    // The first edge k in 1..n with angle(e_k) >= angle(tangent).
-    while lo < hi {
-        let width = hi - lo;
-        if !swept && width <= SWEPT_LINES * per_line {
-            swept = true;
-            for i in (lo..=hi).step_by(per_line) {
+
+    /// Halves the bracket while it spans many lines (reading the sample's,
+    /// asking for the probes two halvings on), then asks for all of its few.
+    #[inline(always)]
+    fn narrow(&mut self, vertices: &[V2<R>]) {
+        while self.lo < self.hi && self.hi - self.lo > Self::SWEPT_LINES * Self::PER_LINE {
+            let width = self.hi - self.lo;
+            for j in [1, 3, 5, 7] {
+                prefetch(vertices, self.lo + j * width / 8);
+            }
+            self.halve(vertices);
+        }
+        if self.lo < self.hi {
+            for i in (self.lo..=self.hi).step_by(Self::PER_LINE) {
                 prefetch(vertices, i);
             }
-            prefetch(vertices, hi);
-        } else if !swept {
-            for j in [1, 3, 5, 7] {
-                prefetch(vertices, lo + j * width / 8);
-            }
+            prefetch(vertices, self.hi);
         }
-        let mid = lo + width / 2;
-        if turning.short_of_tangent(edge_from(vertices, mid)) {
-            lo = mid + 1;
+    }
+
+    /// The first edge k in 1..n with angle(e_k) >= angle(tangent); 0 for
+    /// none.
+    #[inline(always)]
+    fn finish(mut self, vertices: &[V2<R>]) -> usize {
+        while self.lo < self.hi {
+            self.halve(vertices);
+        }
+        if self.lo >= vertices.len() {
+            0
         } else {
-            hi = mid;
+            self.lo
         }
     }
-    if lo >= n {
-        0
-    } else {
-        lo
+
+    #[inline(always)]
+    fn halve(&mut self, vertices: &[V2<R>]) {
+        let mid = self.lo + (self.hi - self.lo) / 2;
+        if self.turning.short_of_tangent(edge_from(vertices, mid)) {
+            self.lo = mid + 1;
+        } else {
+            self.hi = mid;
+        }
     }
+}
+
+/// The supports of two polytopes that both are searched here
+/// ([`searched_here`]), A's along `da` and B's along `db`: the vertices
+/// [`polytope_support_near`] gives each, from each one's hint. Where both
+/// are searched, the two searches go step by step side by side, so each
+/// wait for memory serves both: large polygons in a scene are read from
+/// memory, not cache, and their searches wait on little else.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn pair_support_near<R: Real>(
+    (a, da, hint_a): (&[V2<R>], V2<R>, u32),
+    (b, db, hint_b): (&[V2<R>], V2<R>, u32),
+) -> (usize, usize) {
+    let climbed = |v: &[V2<R>], d: V2<R>, start: usize| hill_climb(v, d, start, v.len()).0;
+    match (walked(a, da, hint_a), walked(b, db, hint_b)) {
+        (Some(i), Some(j)) => (i, j),
+        (Some(i), None) => (i, climbed(b, db, angular_search(b, db))),
+        (None, Some(j)) => (climbed(a, da, angular_search(a, da)), j),
+        (None, None) => {
+            let (mut search_a, mut search_b) = (AngularSearch::begin(a, da), AngularSearch::begin(b, db));
+            search_a.narrow(a);
+            search_b.narrow(b);
+            let (i, j) = (search_a.finish(a), search_b.finish(b));
+            (climbed(a, da, i), climbed(b, db, j))
+        }
+    }
+}
+
+/// Whether a polytope of capacity `N` and `len` vertices has its support
+/// searched (after a walk from its hint), not scanned, on this target. The
+/// capacity alone says no where every length it holds is scanned, so that
+/// no search is compiled in for it.
+#[inline(always)]
+pub(crate) fn searched_here<R: Real, const N: usize>(len: usize) -> bool {
+    (!R::SIMD_SCAN || N > SIMD_SCAN_MAX) && searched::<N>(len) && !simd_scanned::<R>(len)
 }
 
 /// The edge from vertex `i` to the next, cyclically (zero out of range).
@@ -319,13 +391,23 @@ pub(crate) fn polytope_support_near<R: Real, const N: usize>(
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline)]
 fn walk_from<R: Real, const N: usize>(vertices: &[V2<R>], d: V2<R>, start: u32) -> (usize, V2<R>) {
+    match walked(vertices, d, start) {
+        Some(k) => (k, at(vertices, k)),
+        None => polytope_support::<R, N>(vertices, d),
+    }
+}
+
+/// The top along `d` within 3 steps of the vertex `start`, if it is there
+/// (and `start` a vertex).
+#[inline(always)]
+fn walked<R: Real>(vertices: &[V2<R>], d: V2<R>, start: u32) -> Option<usize> {
     const MAX_WALK: usize = 3;
     if (start as usize) < vertices.len() {
         if let (k, true) = hill_climb(vertices, d, start as usize, MAX_WALK) {
-            return (k, at(vertices, k));
+            return Some(k);
         }
     }
-    polytope_support::<R, N>(vertices, d)
+    None
 }
 
 /// Walk from `start` towards the top along `d`, at most `max_steps` steps:
@@ -388,4 +470,59 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: us
         k = j;
     }
     (k, false)
+}
+
+#[cfg(all(test, not(any(target_os = "none", target_family = "wasm"))))]
+mod tests {
+    use super::{pair_support_near, polytope_support_near, V2};
+    use crate::real::Real;
+
+    /// A counter-clockwise polygon of `n` vertices near an ellipse, from a
+    /// seeded generator: unevenly spaced, so its edges turn by uneven steps.
+    fn polygon<R: Real>(seed: &mut u64, n: usize) -> Vec<V2<R>> {
+        let mut next = || {
+            *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (*seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (a, b) = (0.3 + next(), 0.3 + next());
+        let mut angles: Vec<f64> = (0..n).map(|_| next() * core::f64::consts::TAU).collect();
+        angles.sort_by(f64::total_cmp);
+        angles.dedup();
+        angles.into_iter().map(|t| V2::new(R::from_f64(a * t.cos()), R::from_f64(b * t.sin()))).collect()
+    }
+
+    /// Both searched side by side, A's and B's vertices are those each one's
+    /// own search finds, from every kind of hint: none, far off, near.
+    fn pairs_search_as_each_alone<R: Real>() {
+        let mut seed = 11;
+        for round in 0..400 {
+            let (a, b) = (polygon::<R>(&mut seed, 65 + round % 700), polygon::<R>(&mut seed, 65 + (round * 7) % 300));
+            for k in 0..16u32 {
+                let angle = f64::from(k) * 0.41 + round as f64;
+                let d = V2::new(R::from_f64(angle.cos()), R::from_f64(angle.sin()));
+                let e = V2::new(R::from_f64((angle * 1.7).sin()), R::from_f64((angle * 1.7).cos()));
+                let top_a = polytope_support_near::<R, 1024>(&a, d, u32::MAX).0 as u32;
+                let top_b = polytope_support_near::<R, 1024>(&b, e, u32::MAX).0 as u32;
+                // Walks that arrive from both, from one of the two, from neither.
+                let hints = [(top_a.saturating_sub(2), top_b + 1), (top_a + 1, k * 5), (9_999, top_b), (k * 37, 3)];
+                for (hint_a, hint_b) in hints.into_iter().chain([(u32::MAX, u32::MAX)]) {
+                    let alone = (
+                        polytope_support_near::<R, 1024>(&a, d, hint_a).0,
+                        polytope_support_near::<R, 1024>(&b, e, hint_b).0,
+                    );
+                    assert_eq!(pair_support_near((&a, d, hint_a), (&b, e, hint_b)), alone, "round {round}, k {k}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn pairs_search_as_each_alone_f32() {
+        pairs_search_as_each_alone::<f32>();
+    }
+
+    #[test]
+    fn pairs_search_as_each_alone_f64() {
+        pairs_search_as_each_alone::<f64>();
+    }
 }

@@ -182,6 +182,16 @@ pub trait SupportMap<R: Real> {
         None
     }
 
+    /// The vertices of a polygon core whose support is searched, not
+    /// scanned (a large one, as [`polygon_core`](Self::polygon_core) lends
+    /// them): a pair of them has its two searches wait for memory together.
+    /// Hosts only, as [`small_polygon`](Self::small_polygon).
+    #[doc(hidden)]
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn searched_polygon_core(&self) -> Option<SmallPolygon<'_, R>> {
+        None
+    }
+
     /// The end points of a segment core (a segment's, a capsule's),
     /// relative to the reference point: against a small polygon, its two
     /// normals and the polygon's are all the separating axes there are, so
@@ -236,6 +246,10 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn polygon_core(&self) -> Option<SmallPolygon<'_, R>> {
         (**self).polygon_core()
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn searched_polygon_core(&self) -> Option<SmallPolygon<'_, R>> {
+        (**self).searched_polygon_core()
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn segment_core(&self) -> Option<[V2<R>; 2]> {

@@ -232,6 +232,10 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     fn polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
         Some(super::SmallPolygon { vertices: self.vertices() })
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn searched_polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
+        crate::polytope::searched_here::<R, N>(self.len).then(|| super::SmallPolygon { vertices: self.scanned() })
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
         let size = self.bounding_radius_squared.sqrt();
