@@ -173,7 +173,7 @@ impl<R: Real> AngularSearch<R> {
             for j in [1, 3, 5, 7] {
                 prefetch(vertices, self.lo + j * width / 8);
             }
-            self.halve(vertices);
+            self.halve(vertices, false);
         }
         if self.lo < self.hi {
             for i in (self.lo..=self.hi).step_by(Self::PER_LINE) {
@@ -184,11 +184,15 @@ impl<R: Real> AngularSearch<R> {
     }
 
     /// The first edge k in 1..n with angle(e_k) >= angle(tangent); 0 for
-    /// none.
+    /// none. These halvings read lines already asked for, and which way
+    /// each goes is a coin toss: on hosts a select each, not a branch the
+    /// predictor misses half the time (while lines are still coming, a
+    /// branch lets the processor read ahead on its guess, and pays).
+    /// Microcontrollers have no predictor to miss.
     #[inline(always)]
     fn finish(mut self, vertices: &[V2<R>]) -> usize {
         while self.lo < self.hi {
-            self.halve(vertices);
+            self.halve(vertices, cfg!(not(target_os = "none")));
         }
         if self.lo >= vertices.len() {
             0
@@ -198,9 +202,13 @@ impl<R: Real> AngularSearch<R> {
     }
 
     #[inline(always)]
-    fn halve(&mut self, vertices: &[V2<R>]) {
+    fn halve(&mut self, vertices: &[V2<R>], by_select: bool) {
         let mid = self.lo + (self.hi - self.lo) / 2;
-        if self.turning.short_of_tangent(edge_from(vertices, mid)) {
+        let short = self.turning.short_of_tangent(edge_from(vertices, mid));
+        if by_select {
+            self.lo = core::hint::select_unpredictable(short, mid + 1, self.lo);
+            self.hi = core::hint::select_unpredictable(short, self.hi, mid);
+        } else if short {
             self.lo = mid + 1;
         } else {
             self.hi = mid;
