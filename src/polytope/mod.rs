@@ -482,8 +482,11 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: us
 
 #[cfg(all(test, not(any(target_os = "none", target_family = "wasm"))))]
 mod tests {
+    extern crate std;
+
     use super::{pair_support_near, polytope_support_near, V2};
     use crate::real::Real;
+    use std::vec::Vec;
 
     /// A counter-clockwise polygon of `n` vertices near an ellipse, from a
     /// seeded generator: unevenly spaced, so its edges turn by uneven steps.
