@@ -404,6 +404,8 @@ mod small {
             for (separation, &(normal, least, _)) in separation.iter_mut().zip(&axes) {
                 *separation = scaled_separation(normal, least);
             }
+            // Coordinates in arrays apart: as one array of vectors, built in
+            // the loop above, the cached penetration read slower.
             let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
             let length: [R; LEADERS] = core::array::from_fn(|k| (nx[k] * nx[k] + ny[k] * ny[k]).sqrt());
             let ux: [R; LEADERS] = core::array::from_fn(|k| nx[k] / length[k]);
