@@ -161,6 +161,29 @@ impl<R: Real> Polygons<R> {
         Some(if of_a { (distance, unit, foot, nearest) } else { (distance, -unit, nearest, foot) })
     }
 
+    /// Three vertices of B - A around axis `slot`'s overlap (A's edges
+    /// first, then B's), with their ids: the axis's face (the edge less the
+    /// other polygon's vertex reaching furthest past it) and the support
+    /// along the axis's normal `u`, from A towards B. Where the axis is the
+    /// least overlap, the origin's foot on that face lies on it.
+    pub fn face_triangle(&self, slot: usize, u: V2<R>) -> [(V2<R>, u32); 3] {
+        let of_a = slot < M;
+        let (own, other) = if of_a { (&self.a, &self.b) } else { (&self.b, &self.a) };
+        let edge = slot % M;
+        let n = own.normal(edge);
+        let reach: [R; M] = core::array::from_fn(|j| -(n.x * other.xs[j] + n.y * other.ys[j]));
+        let deepest = first_max(&reach);
+        let next = (edge + 1) % own.len.max(1);
+        let (p, q, v) = (own.v[edge], own.v[next % M], other.v[deepest]);
+        let (edge, next, deepest) = (edge as u32, next as u32, deepest as u32);
+        let apex = self.support(u);
+        if of_a {
+            [(v - p, edge << 16 | deepest), (v - q, next << 16 | deepest), apex]
+        } else {
+            [(p - v, deepest << 16 | edge), (q - v, deepest << 16 | next), apex]
+        }
+    }
+
     /// Axis `slot` alone (A's edges first, then B's, as in [`Axes`]): its
     /// normal from A towards B (not unit), the least reach along it,
     /// computed as [`Axes::new`] computes them, to the bit, and whether the
@@ -314,6 +337,22 @@ impl<R: Real> Axes<R> {
     pub fn penetration(&self) -> (R, V2<R>) {
         let (separation, best) = self.separations();
         penetration_along(separation[best], self.normals[best])
+    }
+
+    /// The axis of the least overlap of overlapping polygons, picked by the
+    /// overlap's square over the normal's (no square root), and its normal
+    /// from A towards B (not unit).
+    pub fn least_overlap_by_square(&self) -> (usize, V2<R>) {
+        let key: [R; 2 * M] = core::array::from_fn(|i| {
+            let (least, nn) = (self.least[i], self.normals[i].length_squared());
+            if nn > R::ZERO {
+                -(least * least / nn)
+            } else {
+                -R::INFINITY
+            }
+        });
+        let best = first_max(&key);
+        (best, self.normals[best])
     }
 
     /// The axis that separates the polygons the most, measured unscaled

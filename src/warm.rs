@@ -173,7 +173,9 @@ mod small {
 
     /// Whether triangle `w` encloses the origin by more than `margin`
     /// (times each edge's length, by [`l1`], plus the coordinates' size
-    /// `size`, which covers the cross products' own rounding).
+    /// `size`, which covers the cross products' own rounding). Inlined:
+    /// out of line, the cached intersection test read slower.
+    #[inline(always)]
     fn surely_encloses<R: Real>(w: [V2<R>; 3], margin: R, size: R) -> bool {
         let area = (w[1] - w[0]).cross(w[2] - w[0]);
         let sign = if area > R::ZERO { R::ONE } else { -R::ONE };
@@ -224,20 +226,27 @@ mod small {
             surely_encloses([p, q, r], R::from_u32(ROUNDING) * R::EPSILON * size, size)
         }
 
-        /// A triangle of supports along three directions a third of a turn
-        /// apart, kept if it encloses the origin by more than rounding: the
-        /// next step's proof of overlap.
-        fn refill_triangle<A, B>(&mut self, pair: &Pair<'_, R, A, B>, polygons: &Polygons<R>)
+        /// A triangle of vertices of B - A that encloses the origin by more
+        /// than rounding, the next step's proof of overlap, if one of two
+        /// does: the face of the least overlap with the support across
+        /// from it (it fails mostly where the origin lies deep), else the
+        /// supports along the centers' offset and square to it both ways
+        /// (which fails mostly where it lies shallow).
+        fn refill_triangle<A, B>(&mut self, pair: &Pair<'_, R, A, B>, polygons: &Polygons<R>, axes: &Axes<R>)
         where
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            let d = pair.first_direction;
-            let (c, s) = (R::ZERO, R::ONE);
-            let turn = |s: R| V2::new(c * d.x - s * d.y, s * d.x + c * d.y);
-            let supports = [polygons.support(d), polygons.support(turn(s)), polygons.support(turn(-s))];
             let size = Self::size(pair);
             let margin = R::from_u32(ROUNDING) * R::EPSILON * size;
+            let (slot, u) = axes.least_overlap_by_square();
+            let face = polygons.face_triangle(slot, u);
+            if surely_encloses(face.map(|s| s.0), margin, size) {
+                self.ids = face.map(|s| s.1);
+                return;
+            }
+            let d = pair.first_direction;
+            let supports = [polygons.support(d), polygons.support(d.perp_cw()), polygons.support(-d.perp_cw())];
             self.ids =
                 if surely_encloses(supports.map(|s| s.0), margin, size) { supports.map(|s| s.1) } else { [NO_ID; 3] };
         }
@@ -279,7 +288,7 @@ mod small {
                 self.separating = axes.most_separating() as u32;
             } else {
                 self.separating = NO_ID;
-                self.refill_triangle(pair, &polygons);
+                self.refill_triangle(pair, &polygons, &axes);
             }
             Detection { intersecting: !separated, iterations: 1, status: Status::Converged }
         }

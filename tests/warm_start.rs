@@ -401,6 +401,47 @@ macro_rules! warm_suite {
                 assert!(tally.warm_iterations <= tally.cold_iterations, "{tally:?}");
             }
 
+            /// Polygons overlapping by about 1% of their size, nudged a little
+            /// each step: after its first step, the cached intersection test
+            /// decides nearly every overlapping step alone, from a triangle
+            /// of B - A around the shallow overlap.
+            #[test]
+            fn shallow_overlaps_decided() {
+                let mut rng = Rng(4);
+                let gjk = Gjk::<R>::new();
+                let (mut overlapping, mut decided) = (0u64, 0u64);
+                for _ in 0..cases(200) {
+                    let (Some(ga), Some(gb)) = (random_geo(&mut rng, 0), random_geo(&mut rng, 0)) else { continue };
+                    let (Some(S::Small(a)), Some(S::Small(b))) = (build(&ga), build(&gb)) else { continue };
+                    let ta = transform(&[0.0, 0.0, rng.range(0.0, TAU)]);
+                    let mut pose = [rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(0.0, TAU)];
+                    let Some(p) = gjk.penetration(&a, &ta, &b, &transform(&pose)) else { continue };
+                    // B moved along the normal until it overlaps by 1% of the size.
+                    let shift = p.depth as f64 - 0.01 * ga.extent().max(gb.extent());
+                    let n = pt(p.normal);
+                    (pose[0], pose[1]) = (r32(pose[0] + shift * n[0]), r32(pose[1] + shift * n[1]));
+                    let mut cache = PairCache::default();
+                    for k in 0..20 {
+                        let tb = transform(&pose);
+                        let (cold, warm) =
+                            (gjk.intersects(&a, &ta, &b, &tb), gjk.intersects_cached(&a, &ta, &b, &tb, &mut cache));
+                        assert_eq!(warm.intersecting, cold.intersecting, "{ga:?} {gb:?} at {pose:?}");
+                        if k > 0 && cold.intersecting {
+                            overlapping += 1;
+                            decided += (warm.iterations == 0) as u64;
+                        }
+                        let (r, th) = (0.0005 * rng.unit().sqrt(), rng.range(0.0, TAU));
+                        pose = [
+                            r32(pose[0] + r * th.cos()),
+                            r32(pose[1] + r * th.sin()),
+                            pose[2] + rng.range(-0.02, 0.02).to_radians(),
+                        ];
+                    }
+                }
+                println!("{}: {decided} of {overlapping} overlapping steps decided", stringify!($modname));
+                assert!(overlapping > 1000 && decided * 10 >= overlapping * 9, "{decided} of {overlapping} decided");
+            }
+
             /// Every kind of shape against every other: polygons of up to 32
             /// vertices, circles, capsules, rounded polygons.
             #[test]
