@@ -10,7 +10,7 @@
 
 use crate::minkowski::Pair;
 use crate::polytope::{first_max, SMALL_POLYGON_MAX};
-use crate::real::{lesser, Real, V2};
+use crate::real::{lesser, scaled_separation, Real, V2};
 use crate::shape::SupportMap;
 
 const M: usize = SMALL_POLYGON_MAX;
@@ -198,6 +198,65 @@ impl<R: Real> Polygons<R> {
         let n = own.normal(edge);
         let least = reach(own, other, n, edge);
         (core::hint::select_unpredictable(of_a, n, -n), least, edge < own.len && slot < 2 * M)
+    }
+}
+
+/// The pair's small polygons as a few axes read them: each one's
+/// coordinates apart (B's placed, unused slots repeating vertex 0), and none
+/// of the sixteen edge normals [`Polygons`] turns and keeps.
+pub(crate) struct Coordinates<'s, R> {
+    a: &'s [V2<R>],
+    b: &'s [V2<R>],
+    xs: [[R; M]; 2],
+    ys: [[R; M]; 2],
+}
+
+impl<'s, R: Real> Coordinates<'s, R> {
+    #[inline(always)]
+    pub fn new<A, B>(pair: &Pair<'_, R, A, B>, a: &'s [V2<R>], b: &'s [V2<R>]) -> Self
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let padded = |v: &[V2<R>]| -> [V2<R>; M] {
+            let first = v.first().copied().unwrap_or_default();
+            core::array::from_fn(|i| v.get(i).copied().unwrap_or(first))
+        };
+        let (own_a, mut placed_b) = (padded(a), padded(b));
+        for p in &mut placed_b {
+            *p = pair.b_to_pair(*p);
+        }
+        let xs = [own_a.map(|p| p.x), placed_b.map(|p| p.x)];
+        let ys = [own_a.map(|p| p.y), placed_b.map(|p| p.y)];
+        Self { a, b, xs, ys }
+    }
+
+    /// [`Polygons::axis`] of the same pair, to the bit: the same products
+    /// in the same order, on the same placed points.
+    #[inline(always)]
+    pub fn axis<A, B>(&self, pair: &Pair<'_, R, A, B>, slot: usize) -> (V2<R>, R, bool)
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let of_a = slot < M;
+        let own = core::hint::select_unpredictable(of_a, self.a, self.b);
+        let edge = slot % M;
+        let exists = edge < own.len() && slot < 2 * M;
+        let (p, q) = (own.get(edge).copied().unwrap_or_default(), own.get(edge + 1).or(own.first()).copied());
+        let n = (q.unwrap_or_default() - p).perp_cw();
+        let (n, p) = if of_a { (n, p) } else { (pair.b_vector_to_pair(n), pair.b_to_pair(p)) };
+        let other = usize::from(of_a);
+        let (xs, ys) = (&self.xs[other], &self.ys[other]);
+        let mut least: [R; M] = core::array::from_fn(|j| n.x * xs[j] + n.y * ys[j]);
+        let mut width = M;
+        while width > 1 {
+            width /= 2;
+            for k in 0..width {
+                least[k] = lesser(least[k + width], least[k]);
+            }
+        }
+        (core::hint::select_unpredictable(of_a, n, -n), least[0] - n.dot(p), exists)
     }
 }
 
@@ -401,25 +460,10 @@ impl<R: Real> Axes<R> {
     /// slots with no edge), and the first greatest.
     #[inline(always)]
     fn separations(&self) -> ([R; 2 * M], usize) {
-        let separation: [R; 2 * M] = core::array::from_fn(|i| scaled_separation(self.normals[i], self.least[i]));
+        let (nx, ny) = (self.normals.map(|n| n.x), self.normals.map(|n| n.y));
+        let separation = R::scaled_separations(&nx, &ny, &self.least);
         let best = first_max(&separation);
         (separation, best)
-    }
-}
-
-/// The separation along an axis's unit normal, from its normal (not unit)
-/// and least reach; minus infinity for an axis with no normal (a slot past
-/// the last edge), which then never leads.
-#[inline(always)]
-pub(crate) fn scaled_separation<R: Real>(normal: V2<R>, least: R) -> R {
-    // Lengths scaled by the larger component first, so the squares of a
-    // tiny polygon's normals neither underflow nor lose their digits.
-    let length = scaled_length(normal);
-    let s = least / length;
-    if length > R::ZERO {
-        s
-    } else {
-        -R::INFINITY
     }
 }
 
@@ -429,16 +473,4 @@ pub(crate) fn penetration_along<R: Real>(separation: R, normal: V2<R>) -> (R, V2
     let normal = normal.try_normalize_inlined().unwrap_or(V2::new(R::ONE, R::ZERO));
     // From zero: a separation of -0 is a depth of +0.
     (R::ZERO - separation, normal)
-}
-
-/// `|n|`, scaled by the larger component first, so the square of a tiny
-/// vector neither underflows nor loses its digits.
-#[inline(always)]
-fn scaled_length<R: Real>(n: V2<R>) -> R {
-    let m = n.x.abs().max(n.y.abs());
-    if m > R::ZERO {
-        m * (n * (R::ONE / m)).length_squared().sqrt()
-    } else {
-        R::ZERO
-    }
 }

@@ -12,8 +12,9 @@
 
 use crate::minkowski::Pair;
 use crate::polytope::polytope_support;
+use crate::real::scaled_separation;
 use crate::real::{Real, V2};
-use crate::sat::{penetration_along, scaled_separation};
+use crate::sat::penetration_along;
 use crate::shape::SupportMap;
 
 /// Up to this many vertices a side, polygons' penetrations are walked;

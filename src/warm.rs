@@ -121,9 +121,7 @@ mod small {
     use crate::polytope::first_max;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
-    use crate::sat::{
-        face_and_vertex_by, penetration_along, scaled_separation, separates_by, Axes, FaceAndVertex, Polygons,
-    };
+    use crate::sat::{face_and_vertex_by, penetration_along, separates_by, Axes, Coordinates, FaceAndVertex, Polygons};
     use crate::shape::SupportMap;
     use crate::simplex::{Payload, Simplex, Vertex};
 
@@ -381,7 +379,16 @@ mod small {
         /// the first greatest picked by selects: how many lead and which
         /// wins differ from pair to pair, and branches on them were
         /// mispredicted several times a query.
-        fn by_leaders(&mut self, polygons: &Polygons<R>, leaders: u32) -> Option<Option<(R, V2<R>)>> {
+        fn by_leaders<A, B>(
+            &mut self,
+            pair: &Pair<'_, R, A, B>,
+            coordinates: &Coordinates<'_, R>,
+            leaders: u32,
+        ) -> Option<Option<(R, V2<R>)>>
+        where
+            A: SupportMap<R> + ?Sized,
+            B: SupportMap<R> + ?Sized,
+        {
             // Set bits in ascending order: ties go to the first, as in `Axes`.
             let first = leaders.trailing_zeros() as usize;
             let mut rest = leaders;
@@ -394,7 +401,7 @@ mod small {
             }
             let mut axes = [(V2::zero(), R::ZERO, false); LEADERS];
             for (axis, &slot) in axes.iter_mut().zip(&slots) {
-                *axis = polygons.axis(slot);
+                *axis = coordinates.axis(pair, slot);
             }
             if !axes.iter().all(|axis| axis.2) {
                 return None;
@@ -409,13 +416,10 @@ mod small {
             // another, before the pick, rather than the winner's normal
             // after it: that waited on a square root and two divisions in
             // a row.
-            let mut separation = [R::ZERO; LEADERS];
-            for (separation, &(normal, least, _)) in separation.iter_mut().zip(&axes) {
-                *separation = scaled_separation(normal, least);
-            }
-            // Coordinates in arrays apart: as one array of vectors, built in
-            // the loop above, the cached penetration read slower.
+            // Coordinates in arrays apart: as one array of vectors, the
+            // cached penetration read slower.
             let (nx, ny) = (axes.map(|axis| axis.0.x), axes.map(|axis| axis.0.y));
+            let separation = R::scaled_separations(&nx, &ny, &axes.map(|axis| axis.1));
             let length: [R; LEADERS] = core::array::from_fn(|k| (nx[k] * nx[k] + ny[k] * ny[k]).sqrt());
             let ux: [R; LEADERS] = core::array::from_fn(|k| nx[k] / length[k]);
             let uy: [R; LEADERS] = core::array::from_fn(|k| ny[k] / length[k]);
@@ -449,7 +453,6 @@ mod small {
             if self.separating != NO_ID && self.still_separates(pair, a, b) {
                 return None;
             }
-            let polygons = Polygons::new(pair, a, b);
             let found = |(depth, normal): (R, V2<R>), iterations| Penetration {
                 normal: pair.to_world_vector(normal),
                 depth,
@@ -457,14 +460,22 @@ mod small {
                 iterations,
                 status: Status::Converged,
             };
+            if !R::WARM_LEADERS {
+                let polygons = Polygons::new(pair, a, b);
+                let axes = Axes::of(&polygons);
+                let separated = axes.separated();
+                self.separating = if separated { axes.most_separating() as u32 } else { NO_ID };
+                return (!separated).then(|| found(axes.penetration(), 1));
+            }
             // The leaders first: they are kept for overlapping polygons,
             // and where they hold, no axis outside them (the cached
             // separating one included) can change their answer.
             if let Some(leaders) = self.leaders_hold(pair, a, b) {
-                if let Some(answer) = self.by_leaders(&polygons, leaders) {
+                if let Some(answer) = self.by_leaders(pair, &Coordinates::new(pair, a, b), leaders) {
                     return answer.map(|answer| found(answer, 0));
                 }
             }
+            let polygons = Polygons::new(pair, a, b);
             let (_, least, exists) = polygons.axis(self.separating as usize);
             if exists & (least > R::ZERO) {
                 return None;
