@@ -71,8 +71,14 @@ impl<R: Real> Padded<R> {
 /// measured from the edge: what [`faces`] gives that axis.
 #[inline(always)]
 fn reach<R: Real>(own: &Padded<R>, other: &Padded<R>, n: V2<R>, i: usize) -> R {
+    least_dot(n, &other.xs, &other.ys) - n.dot(own.v[i % M])
+}
+
+/// The least dot product of the points (`xs`, `ys`) with `n`.
+#[inline(always)]
+fn least_dot<R: Real>(n: V2<R>, xs: &[R; M], ys: &[R; M]) -> R {
     // A tree of minima, not a chain: three compares deep, not eight.
-    let mut least: [R; M] = core::array::from_fn(|j| n.x * other.xs[j] + n.y * other.ys[j]);
+    let mut least: [R; M] = core::array::from_fn(|j| n.x * xs[j] + n.y * ys[j]);
     let mut width = M;
     while width > 1 {
         width /= 2;
@@ -80,7 +86,7 @@ fn reach<R: Real>(own: &Padded<R>, other: &Padded<R>, n: V2<R>, i: usize) -> R {
             least[k] = lesser(least[k + width], least[k]);
         }
     }
-    least[0] - n.dot(own.v[i % M])
+    least[0]
 }
 
 /// For every edge slot of `own`: the outward normal (not unit) and the least
@@ -247,16 +253,8 @@ impl<'s, R: Real> Coordinates<'s, R> {
         let n = (q.unwrap_or_default() - p).perp_cw();
         let (n, p) = if of_a { (n, p) } else { (pair.b_vector_to_pair(n), pair.b_to_pair(p)) };
         let other = usize::from(of_a);
-        let (xs, ys) = (&self.xs[other], &self.ys[other]);
-        let mut least: [R; M] = core::array::from_fn(|j| n.x * xs[j] + n.y * ys[j]);
-        let mut width = M;
-        while width > 1 {
-            width /= 2;
-            for k in 0..width {
-                least[k] = lesser(least[k + width], least[k]);
-            }
-        }
-        (core::hint::select_unpredictable(of_a, n, -n), least[0] - n.dot(p), exists)
+        let least = least_dot(n, &self.xs[other], &self.ys[other]);
+        (core::hint::select_unpredictable(of_a, n, -n), least - n.dot(p), exists)
     }
 }
 
