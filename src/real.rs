@@ -385,7 +385,9 @@ mod sse2 {
             let inv = _mm_div_ps(one, m);
             let (sx, sy) = (_mm_mul_ps(x, inv), _mm_mul_ps(y, inv));
             let scaled = _mm_mul_ps(m, _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(sx, sx), _mm_mul_ps(sy, sy))));
-            let length = _mm_and_ps(_mm_cmpgt_ps(m, zero), scaled);
+            // A zero normal's scaled length is NaN here, not zero as in the
+            // scalar function: either way no separation is kept for it.
+            let length = scaled;
             let s = _mm_div_ps(quad(least, k), length);
             let kept = _mm_cmpgt_ps(length, zero);
             let s = _mm_or_ps(_mm_and_ps(kept, s), _mm_andnot_ps(kept, _mm_set1_ps(f32::NEG_INFINITY)));
@@ -410,7 +412,9 @@ mod sse2 {
             let inv = _mm_div_pd(one, m);
             let (sx, sy) = (_mm_mul_pd(x, inv), _mm_mul_pd(y, inv));
             let scaled = _mm_mul_pd(m, _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(sx, sx), _mm_mul_pd(sy, sy))));
-            let length = _mm_and_pd(_mm_cmpgt_pd(m, zero), scaled);
+            // A zero normal's scaled length is NaN here, not zero as in the
+            // scalar function: either way no separation is kept for it.
+            let length = scaled;
             let s = _mm_div_pd(pair(least, k), length);
             let kept = _mm_cmpgt_pd(length, zero);
             let s = _mm_or_pd(_mm_and_pd(kept, s), _mm_andnot_pd(kept, _mm_set1_pd(f64::NEG_INFINITY)));
@@ -898,6 +902,31 @@ mod tests {
             let lanes = super::sse2::least_dots8_f64(&nx, &ny, &xs, &ys);
             let scalar = folded(&nx, &ny, &xs, &ys, f64::INFINITY);
             assert_eq!(lanes, scalar, "{nx:?} {ny:?} {xs:?} {ys:?}");
+        }
+    }
+
+    /// Separations in lanes are `scaled_separation`'s, to the bit: zero
+    /// normals (minus infinity), zeros of both signs, and normals tiny
+    /// enough that their squares would underflow unscaled, or large.
+    #[test]
+    fn sse_separations_are_the_scalar_ones() {
+        use super::{scaled_separation, V2};
+        let mut seed = 11;
+        for round in 0..20_000 {
+            let scale = [1.0, 1e-25, 1e-200, 1e20][round % 4];
+            let [nx, ny] = [0; 2].map(|_| values(&mut seed).map(|x| x * scale));
+            let least = values(&mut seed);
+            let joined =
+                |a: [f64; 8]| -> [f64; 16] { core::array::from_fn(|i| a[i % 8] * if i < 8 { 1.0 } else { -2.0 }) };
+            let (nx, ny, least) = (joined(nx), joined(ny), joined(least));
+            let single = |a: [f64; 16]| a.map(|x| x as f32);
+            let (nx32, ny32, least32) = (single(nx), single(ny), single(least));
+            let lanes = super::sse2::scaled_separations_f32(&nx32, &ny32, &least32);
+            let scalar: [f32; 16] = core::array::from_fn(|k| scaled_separation(V2::new(nx32[k], ny32[k]), least32[k]));
+            assert_eq!(lanes.map(f32::to_bits), scalar.map(f32::to_bits), "{nx32:?} {ny32:?} {least32:?}");
+            let lanes = super::sse2::scaled_separations_f64(&nx, &ny, &least);
+            let scalar: [f64; 16] = core::array::from_fn(|k| scaled_separation(V2::new(nx[k], ny[k]), least[k]));
+            assert_eq!(lanes.map(f64::to_bits), scalar.map(f64::to_bits), "{nx:?} {ny:?} {least:?}");
         }
     }
 }

@@ -59,6 +59,13 @@ impl<R: Real> Padded<R> {
         Self { v, xs, ys, normals, len: vertices.len().min(M) }
     }
 
+    /// The first vertex furthest along `d` (the padding copies vertex 0,
+    /// after it: the first is a vertex).
+    #[inline(always)]
+    fn support(&self, d: V2<R>) -> usize {
+        first_max(&self.v.map(|p| p.dot(d)))
+    }
+
     /// The outward normal of edge `i` (not unit), in the pair frame.
     #[inline(always)]
     fn normal(&self, i: usize) -> V2<R> {
@@ -131,11 +138,7 @@ impl<R: Real> Polygons<R> {
     /// in the high 16 bits, B's in the low), as GJK's supports name them.
     /// The padding copies vertex 0, after it: the first greatest is a vertex.
     pub fn support(&self, d: V2<R>) -> (V2<R>, u32) {
-        let along = |p: &Padded<R>, d: V2<R>| {
-            let dots: [R; M] = core::array::from_fn(|i| p.v[i].dot(d));
-            first_max(&dots)
-        };
-        let (ia, ib) = (along(&self.a, -d), along(&self.b, d));
+        let (ia, ib) = (self.a.support(-d), self.b.support(d));
         (self.b.v[ib] - self.a.v[ia], ((ia as u32) << 16) | ib as u32)
     }
 
@@ -176,9 +179,7 @@ impl<R: Real> Polygons<R> {
         let of_a = slot < M;
         let (own, other) = if of_a { (&self.a, &self.b) } else { (&self.b, &self.a) };
         let edge = slot % M;
-        let n = own.normal(edge);
-        let reach: [R; M] = core::array::from_fn(|j| -(n.x * other.xs[j] + n.y * other.ys[j]));
-        let deepest = first_max(&reach);
+        let deepest = other.support(-own.normal(edge));
         let next = (edge + 1) % own.len.max(1);
         let (p, q, v) = (own.v[edge], own.v[next % M], other.v[deepest]);
         let (edge, next, deepest) = (edge as u32, next as u32, deepest as u32);
@@ -249,13 +250,20 @@ impl<'s, R: Real> Coordinates<'s, R> {
         let own = core::hint::select_unpredictable(of_a, self.a, self.b);
         let edge = slot % M;
         let exists = edge < own.len() && slot < 2 * M;
-        let (p, q) = (own.get(edge).copied().unwrap_or_default(), own.get(edge + 1).or(own.first()).copied());
-        let n = (q.unwrap_or_default() - p).perp_cw();
+        let (p, q) = edge_ends(own, edge).unwrap_or_default();
+        let n = (q - p).perp_cw();
         let (n, p) = if of_a { (n, p) } else { (pair.b_vector_to_pair(n), pair.b_to_pair(p)) };
         let other = usize::from(of_a);
         let least = least_dot(n, &self.xs[other], &self.ys[other]);
         (core::hint::select_unpredictable(of_a, n, -n), least - n.dot(p), exists)
     }
+}
+
+/// The ends of edge `i` of the counter-clockwise polygon `v`, the closing
+/// edge ending at vertex 0; `None` past the last edge.
+#[inline(always)]
+fn edge_ends<R: Real>(v: &[V2<R>], i: usize) -> Option<(V2<R>, V2<R>)> {
+    Some((*v.get(i)?, *v.get(i + 1).or(v.first())?))
 }
 
 /// Whether edge `slot` of the pair's small polygons (A's edges, then B's
@@ -269,17 +277,15 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let edge = |v: &[V2<R>], i: usize| {
-        let (p, q) = (*v.get(i)?, *v.get(i + 1).or(v.first())?);
-        Some((p, (q - p).perp_cw()))
-    };
     let least = |v: &[V2<R>], d: V2<R>| v.iter().fold(R::INFINITY, |m, &p| m.min(d.dot(p)));
     let offset = pair.pose().2;
     let reach = if slot < M {
-        let Some((p, n)) = edge(a, slot) else { return false };
+        let Some((p, q)) = edge_ends(a, slot) else { return false };
+        let n = (q - p).perp_cw();
         (n, least(b, pair.pair_vector_to_b(n)) + n.dot(offset) - n.dot(p))
     } else {
-        let Some((p, n)) = edge(b, slot - M) else { return false };
+        let Some((p, q)) = edge_ends(b, slot - M) else { return false };
+        let n = (q - p).perp_cw();
         let m = pair.b_vector_to_pair(n);
         (n, least(a, m) - n.dot(p) - m.dot(offset))
     };
@@ -314,7 +320,6 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let edge = |v: &[V2<R>], i: usize| Some((*v.get(i)?, *v.get(i + 1).or(v.first())?));
     // The first vertex of the least dot product along `d`, and that product.
     let nearest = |v: &[V2<R>], d: V2<R>| {
         let dots: [R; M] = core::array::from_fn(|i| v.get(i).map_or(-R::INFINITY, |&p| -d.dot(p)));
@@ -323,14 +328,14 @@ where
     };
     let offset = pair.pose().2;
     if slot < M {
-        let (p, q) = edge(a, slot)?;
+        let (p, q) = edge_ends(a, slot)?;
         let n = (q - p).perp_cw();
         let (v, least) = nearest(b, pair.pair_vector_to_b(n));
         let v = pair.b_to_pair(v);
         let (distance, unit, foot) = foot_on_edge(p, q, n, v, least + n.dot(offset) - n.dot(p))?;
         Some((distance, unit, foot, v))
     } else {
-        let (p, q) = edge(b, slot.checked_sub(M)?)?;
+        let (p, q) = edge_ends(b, slot.checked_sub(M)?)?;
         let n = (q - p).perp_cw();
         let m = pair.b_vector_to_pair(n);
         let (v, least) = nearest(a, m);

@@ -234,7 +234,7 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn searched_polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
-        crate::polytope::searched_here::<R, N>(self.len).then(|| super::SmallPolygon { vertices: self.scanned() })
+        crate::polytope::searched_here::<R, N>(self.len).then(|| super::SmallPolygon { vertices: self.vertices() })
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
