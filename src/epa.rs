@@ -150,6 +150,12 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
             return false;
         }
         let last = self.len() - 1;
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if index <= last {
+            self.copy_within(index..last, index + 1);
+            self[index] = c;
+            return true;
+        }
         move_item(self, last, index);
         true
     }
@@ -270,6 +276,15 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let j = if i + 1 >= n { 0 } else { i + 1 };
         let (p, q) = (items.get(i).copied().unwrap_or_default(), items.get(j).copied().unwrap_or_default());
         let (_, normal) = edge(p.w, q.w);
+        // The closest edge on the boundary: its distance is reached, so the
+        // bounds meet without the support that would repeat an end.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if difference.is_face(p.id, q.id) {
+            if lower <= upper {
+                (upper, best) = (lower, normal);
+            }
+            break (i, lower, Status::Converged);
+        }
         if iterations >= config.max_iterations() {
             break (i, lower, Status::IterationLimit);
         }

@@ -52,6 +52,15 @@ pub trait MinkowskiDifference<R: Real> {
         let _ = (from, to);
         self.support(direction)
     }
+    /// Whether the points of ids `from` and `to`, in that order
+    /// counter-clockwise, end one edge of the difference: a polytope edge
+    /// between them then lies on its boundary, and a solver can stop there
+    /// without asking for the support that would only repeat an end. False,
+    /// the default, is always safe.
+    fn is_face(&self, from: u32, to: u32) -> bool {
+        let _ = (from, to);
+        false
+    }
     /// The pair's size: the larger bounding radius. Relative tolerances are
     /// multiplied by it.
     fn scale(&self) -> R;
@@ -253,6 +262,43 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let (ia, a) = polytope_support_between(a, -d, from >> 16, to >> 16);
         let (ib, b) = polytope_support_between(b, self.inverse_rotate(d), from & 0xFFFF, to & 0xFFFF);
         self.vertex_of((ia, a), (ib, b))
+    }
+
+    /// [`MinkowskiDifference::is_face`] for two polygons whose types are
+    /// known when the program is compiled. The ids must step along one
+    /// polygon's edge while the other's vertex stays, and that vertex must
+    /// be its polygon's support along the edge's normal: the edge of B - A
+    /// between the two points is then that polygon's edge moved by the
+    /// vertex, on the boundary.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn is_face(&self, from: u32, to: u32) -> bool {
+        let Some((a, b)) = self.polygon_cores() else { return false };
+        if from == NO_ID || to == NO_ID {
+            return false;
+        }
+        let (ia, ib, ja, jb) =
+            ((from >> 16) as usize, (from & 0xFFFF) as usize, (to >> 16) as usize, (to & 0xFFFF) as usize);
+        let (n, m) = (a.len(), b.len());
+        if ia >= n || ja >= n || ib >= m || jb >= m {
+            return false;
+        }
+        let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
+        let prev = |k: usize, len: usize| if k == 0 { len - 1 } else { k - 1 };
+        // `k` is a support of `v` along `d`: neither edge beside it rises.
+        let supports = |v: &[V2<R>], k: usize, d: V2<R>| {
+            (v[k] - v[prev(k, v.len())]).dot(d) >= R::ZERO && (v[next(k, v.len())] - v[k]).dot(d) <= R::ZERO
+        };
+        if ib == jb && ja == next(ia, n) {
+            // A's edge, whose outward normal points against B - A's.
+            let outward = (a[ja] - a[ia]).perp_cw();
+            supports(b, ib, -self.inverse_rotate(outward))
+        } else if ia == ja && jb == next(ib, m) {
+            let outward = self.rotate((b[jb] - b[ib]).perp_cw());
+            supports(a, ia, -outward)
+        } else {
+            false
+        }
     }
 
     /// The vertex of B - A from A's vertex `ia` (`a` in its frame) and B's
@@ -490,6 +536,11 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     fn support_between(&self, direction: R::Vector, from: u32, to: u32) -> SupportPoint<R> {
         let v = self.support_between(V2::from_glam(direction), from, to);
         SupportPoint { point: v.w.to_glam(), id: v.id }
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn is_face(&self, from: u32, to: u32) -> bool {
+        Pair::is_face(self, from, to)
     }
     fn scale(&self) -> R {
         Pair::scale(self)
