@@ -94,6 +94,11 @@ pub(crate) struct Corner<R> {
     /// The support id, where a support between two corners can use it.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     id: u32,
+    /// The outward unit normal of the edge to the next corner, kept where
+    /// the stack has room: the closest edge's normal is then read, not
+    /// taken again (a square root and a division before every support).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    normal: V2<R>,
 }
 
 impl<R: Real> Corner<R> {
@@ -106,6 +111,8 @@ impl<R: Real> Corner<R> {
             signed_distance: if curved && id == NO_ID { -R::ZERO } else { R::ZERO },
             #[cfg(not(any(target_os = "none", target_family = "wasm")))]
             id,
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            normal: V2::new(R::ONE, R::ZERO),
         }
     }
     #[inline(always)]
@@ -121,6 +128,30 @@ impl<R: Real> Corner<R> {
         // `d` comes from `edge`, which never gives -0.0 (`max` with +0.0
         // returns +0.0): a -0.0 here would flip the flag.
         self.signed_distance = if curved && self.on_curve() { -d } else { d };
+    }
+    /// Sets the edge to the next corner from [`edge`]'s distance and normal.
+    #[inline(always)]
+    fn set_edge(&mut self, (d, normal): (R, V2<R>), curved: bool) {
+        self.set_edge_distance(d, curved);
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        {
+            self.normal = normal;
+        }
+        #[cfg(any(target_os = "none", target_family = "wasm"))]
+        let _ = normal;
+    }
+    /// The outward unit normal of the edge from here to `next`, as [`edge`]
+    /// gives it.
+    #[inline(always)]
+    fn normal_to(&self, next: &Self) -> V2<R> {
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        let normal = {
+            let _ = next;
+            self.normal
+        };
+        #[cfg(any(target_os = "none", target_family = "wasm"))]
+        let normal = edge(self.w, next.w).1;
+        normal
     }
 }
 
@@ -255,7 +286,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let next = if i + 1 < n { i + 1 } else { 0 };
         let Some(q) = items.get(next).map(|c| c.w) else { break };
         if let Some(c) = items.get_mut(i) {
-            c.set_edge_distance(edge(c.w, q).0, curved);
+            c.set_edge(edge(c.w, q), curved);
         }
     }
 
@@ -275,7 +306,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         }
         let j = if i + 1 >= n { 0 } else { i + 1 };
         let (p, q) = (items.get(i).copied().unwrap_or_default(), items.get(j).copied().unwrap_or_default());
-        let (_, normal) = edge(p.w, q.w);
+        let normal = p.normal_to(&q);
         // The closest edge on the boundary: its distance is reached, so the
         // bounds meet without the support that would repeat an end.
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -310,7 +341,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             break (i, lower, Status::Converged);
         }
         let mut new = w;
-        new.set_edge_distance(edge(w.w, q.w).0, curved);
+        new.set_edge(edge(w.w, q.w), curved);
         // Right after the edge's start (after the last corner when the edge
         // closes the polygon).
         let at = i + 1;
@@ -336,7 +367,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
             }
         };
         if let Some(c) = polytope.items_mut().get_mut(start) {
-            c.set_edge_distance(edge(p.w, w.w).0, curved);
+            c.set_edge(edge(p.w, w.w), curved);
         }
     };
     // Converged, or stopped short without a polish: the best achievable
@@ -517,7 +548,9 @@ fn prune<R: Real>(items: &mut [Corner<R>], threshold: R, lower: R, curved: bool)
     }
     let pick = if after == 0 { n } else { after } - 1;
     let start = if pick == 0 { n } else { pick } - 1;
-    items.get_mut(start)?.set_edge_distance(bound, curved);
+    let end = items.get(after).map_or(V2::zero(), |c| c.w);
+    let corner = items.get_mut(start)?;
+    corner.set_edge((bound, edge(corner.w, end).1), curved);
     Some(pick)
 }
 
