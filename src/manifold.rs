@@ -105,12 +105,24 @@ impl<R: Real> Side<R> {
             return side;
         }
         let mut best = R::HALF;
-        for ccw in [true, false] {
-            if let Some(face) = lent(id, ccw).unwrap_or_else(|| neighbour(&support, v, id, facing, ccw)) {
+        // The faces on either side, where the vertices were at hand (their
+        // runs of vertices on one line already walked), and which is kept.
+        let (mut lent_faces, mut kept) = ([None, None], 0);
+        for (k, ccw) in [true, false].into_iter().enumerate() {
+            let lent_face = lent(id, ccw);
+            let face = match lent_face {
+                Some(face) => {
+                    lent_faces[k] = Some(face);
+                    face
+                }
+                None => neighbour(&support, v, id, facing, ccw),
+            };
+            if let Some(face) = face {
                 let cos = face.normal.dot(facing);
                 if cos > best {
                     best = cos;
                     side.face = Some(face);
+                    kept = k;
                 }
             }
         }
@@ -124,8 +136,17 @@ impl<R: Real> Side<R> {
         // farther along `facing`.)
         let flat = R::ONE - R::ONE / R::from_u32(1024);
         if let Some(face) = side.face.as_mut().filter(|face| face.normal.dot(facing) >= flat) {
-            (face.other, face.other_id) = along_line(&support, v, (face.other, face.other_id), face.normal);
-            (side.support, side.support_id) = along_line(&support, face.other, (v, id), face.normal);
+            if let [Some(_), Some(back)] = if kept == 0 { lent_faces } else { [lent_faces[1], lent_faces[0]] } {
+                // The face's run was walked; the support moves back along
+                // the line to the other side's run's end, where that lies
+                // on it, as `along_line` would find it with a support.
+                if let Some(back) = back.filter(|back| beyond_on_line(face.other, v, back.other)) {
+                    (side.support, side.support_id) = (back.other, back.other_id);
+                }
+            } else {
+                (face.other, face.other_id) = along_line(&support, v, (face.other, face.other_id), face.normal);
+                (side.support, side.support_id) = along_line(&support, face.other, (v, id), face.normal);
+            }
         }
         side
     }
@@ -288,12 +309,19 @@ fn along_line<R: Real>(
     let e = end.0 - from;
     let Some(onward) = e.try_normalize() else { return end };
     let (q, qid) = support(normal + onward * (R::ONE / R::from_u32(1024)));
-    let f = q - from;
-    let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
-    if qid == end.1 || qid == NO_FEATURE || e.cross(f).abs() > slack || e.dot(f) <= e.length_squared() {
+    if qid == end.1 || qid == NO_FEATURE || !beyond_on_line(from, end.0, q) {
         return end;
     }
     (q, qid)
+}
+
+/// Whether `q` lies on the line from `from` through `end`, beyond `end`:
+/// within `4 eps` of the longer offset's length of it (a bend that small
+/// moves no point off the boundary by more).
+fn beyond_on_line<R: Real>(from: V2<R>, end: V2<R>, q: V2<R>) -> bool {
+    let (e, f) = (end - from, q - from);
+    let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
+    e.cross(f).abs() <= slack && e.dot(f) > e.length_squared()
 }
 
 /// The manifold's points of a pair whose normal (in the pair frame, from A
