@@ -548,9 +548,14 @@ fn prune<R: Real>(items: &mut [Corner<R>], threshold: R, lower: R, curved: bool)
     }
     let pick = if after == 0 { n } else { after } - 1;
     let start = if pick == 0 { n } else { pick } - 1;
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     let end = items.get(after).map_or(V2::zero(), |c| c.w);
     let corner = items.get_mut(start)?;
-    corner.set_edge((bound, edge(corner.w, end).1), curved);
+    corner.set_edge_distance(bound, curved);
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    {
+        corner.normal = edge(corner.w, end).1;
+    }
     Some(pick)
 }
 

@@ -105,24 +105,25 @@ impl<R: Real> Side<R> {
             return side;
         }
         let mut best = R::HALF;
-        // The faces on either side, where the vertices were at hand (their
-        // runs of vertices on one line already walked), and which is kept.
+        // Off bare metal, the faces lent on both sides (their runs of
+        // vertices on one line already walked), and the side of the one kept.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         let (mut lent_faces, mut kept) = ([None, None], 0);
-        for (k, ccw) in [true, false].into_iter().enumerate() {
+        for ccw in [true, false] {
             let lent_face = lent(id, ccw);
-            let face = match lent_face {
-                Some(face) => {
-                    lent_faces[k] = Some(face);
-                    face
-                }
-                None => neighbour(&support, v, id, facing, ccw),
-            };
-            if let Some(face) = face {
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            if let Some(face) = lent_face {
+                lent_faces[usize::from(!ccw)] = Some(face);
+            }
+            if let Some(face) = lent_face.unwrap_or_else(|| neighbour(&support, v, id, facing, ccw)) {
                 let cos = face.normal.dot(facing);
                 if cos > best {
                     best = cos;
                     side.face = Some(face);
-                    kept = k;
+                    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+                    {
+                        kept = usize::from(!ccw);
+                    }
                 }
             }
         }
@@ -136,17 +137,19 @@ impl<R: Real> Side<R> {
         // farther along `facing`.)
         let flat = R::ONE - R::ONE / R::from_u32(1024);
         if let Some(face) = side.face.as_mut().filter(|face| face.normal.dot(facing) >= flat) {
-            if let [Some(_), Some(back)] = if kept == 0 { lent_faces } else { [lent_faces[1], lent_faces[0]] } {
-                // The face's run was walked; the support moves back along
-                // the line to the other side's run's end, where that lies
-                // on it, as `along_line` would find it with a support.
+            // The vertices at hand: the face's run was walked, and the
+            // support moves back to the other side's run's end where that
+            // lies on the face's line, as `along_line` would find it with a
+            // support.
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            if let Some(back) = lent_faces[1 - kept] {
                 if let Some(back) = back.filter(|back| beyond_on_line(face.other, v, back.other)) {
                     (side.support, side.support_id) = (back.other, back.other_id);
                 }
-            } else {
-                (face.other, face.other_id) = along_line(&support, v, (face.other, face.other_id), face.normal);
-                (side.support, side.support_id) = along_line(&support, face.other, (v, id), face.normal);
+                return side;
             }
+            (face.other, face.other_id) = along_line(&support, v, (face.other, face.other_id), face.normal);
+            (side.support, side.support_id) = along_line(&support, face.other, (v, id), face.normal);
         }
         side
     }
@@ -309,7 +312,11 @@ fn along_line<R: Real>(
     let e = end.0 - from;
     let Some(onward) = e.try_normalize() else { return end };
     let (q, qid) = support(normal + onward * (R::ONE / R::from_u32(1024)));
-    if qid == end.1 || qid == NO_FEATURE || !beyond_on_line(from, end.0, q) {
+    // `beyond_on_line`'s test (hosts'), written out: firmware takes this
+    // path, and a call moved its stack frames.
+    let f = q - from;
+    let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
+    if qid == end.1 || qid == NO_FEATURE || e.cross(f).abs() > slack || e.dot(f) <= e.length_squared() {
         return end;
     }
     (q, qid)
@@ -318,6 +325,8 @@ fn along_line<R: Real>(
 /// Whether `q` lies on the line from `from` through `end`, beyond `end`:
 /// within `4 eps` of the longer offset's length of it (a bend that small
 /// moves no point off the boundary by more).
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
 fn beyond_on_line<R: Real>(from: V2<R>, end: V2<R>, q: V2<R>) -> bool {
     let (e, f) = (end - from, q - from);
     let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
