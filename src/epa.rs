@@ -6,8 +6,9 @@
 //! difference's boundary is within the edge's cone from the origin, so the
 //! closest edge gives a *lower* bound of the depth; the support along that
 //! edge's normal an *upper* bound. EPA pushes the closest edge out until the
-//! bounds meet: exactly when a support vertex repeats (polytopes), or within
-//! `epsilon * size` (curved cores).
+//! bounds meet: exactly when a support vertex repeats or the closest edge
+//! is known to be a face (polytopes), or within `epsilon * size` (curved
+//! cores).
 
 use crate::config::EpaConfig;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
