@@ -587,3 +587,68 @@ impl<'s, R: Real> Corners<'s, R> {
         .unwrap_or_default()
     }
 }
+
+#[cfg(all(test, not(any(target_os = "none", target_family = "wasm"))))]
+mod tests {
+    use super::{Pair, NO_ID};
+    use crate::real::V2;
+    use crate::shape::Polygon;
+    use crate::transform::Transform;
+    use glam::DVec2;
+
+    /// `is_face` against its definition, on integer polygons whose products
+    /// are exact: ids one step apart along one polygon's edge, with the
+    /// other's vertex its polygon's support (a greatest dot product, ties
+    /// included) along that edge's normal of B - A. Every other pair of ids
+    /// is no face.
+    #[test]
+    fn faces_are_the_edges_of_the_difference() {
+        let a = Polygon::<f64, 8>::new(&[
+            DVec2::new(0.0, 0.0),
+            DVec2::new(4.0, 0.0),
+            DVec2::new(4.0, 3.0),
+            DVec2::new(0.0, 3.0),
+        ])
+        .unwrap();
+        let b = Polygon::<f64, 8>::new(&[
+            DVec2::new(0.0, 0.0),
+            DVec2::new(2.0, -1.0),
+            DVec2::new(4.0, 0.0),
+            DVec2::new(3.0, 2.0),
+            DVec2::new(1.0, 3.0),
+        ])
+        .unwrap();
+        let (ta, tb) = (Transform::IDENTITY, Transform::from_translation(DVec2::new(1.0, 2.0)).unwrap());
+        let pair = Pair::new(&a, &ta, &b, &tb);
+        let (va, vb) = pair.polygon_cores().unwrap();
+        // B in the pair frame: the translation is exact on these integers.
+        let (n, m) = (va.len(), vb.len());
+        let mut placed = [V2::zero(); 8];
+        for (slot, &p) in placed.iter_mut().zip(vb) {
+            *slot = pair.b_to_pair(p);
+        }
+        let placed = &placed[..m];
+        let supports = |v: &[V2<f64>], k: usize, d: V2<f64>| v.iter().all(|p| p.dot(d) <= v[k].dot(d));
+        let (mut faces, mut checked) = (0, 0);
+        for (ia, ib, ja, jb) in (0..n)
+            .flat_map(|ia| (0..m).flat_map(move |ib| (0..n).flat_map(move |ja| (0..m).map(move |jb| (ia, ib, ja, jb)))))
+        {
+            let expected = if ib == jb && ja == (ia + 1) % n {
+                supports(placed, ib, -(va[ja] - va[ia]).perp_cw())
+            } else if ia == ja && jb == (ib + 1) % m {
+                supports(va, ia, -(placed[jb] - placed[ib]).perp_cw())
+            } else {
+                false
+            };
+            let (from, to) = (((ia << 16) | ib) as u32, ((ja << 16) | jb) as u32);
+            assert_eq!(pair.is_face(from, to), expected, "ids ({ia}, {ib}) to ({ja}, {jb})");
+            faces += usize::from(expected);
+            checked += 1;
+        }
+        // Every edge of B - A once (no edge of B is parallel to one of A's),
+        // and ids that are no vertices at all.
+        assert_eq!((faces, checked), (n + m, n * n * m * m));
+        assert!(!pair.is_face(NO_ID, 1) && !pair.is_face(1, NO_ID));
+        assert!(!pair.is_face(((n as u32) << 16) | 1, 1 << 16));
+    }
+}
