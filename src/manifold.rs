@@ -106,24 +106,20 @@ impl<R: Real> Side<R> {
         }
         let mut best = R::HALF;
         // Off bare metal, the faces lent on both sides (their runs of
-        // vertices on one line already walked), and the side of the one kept.
+        // vertices on one line already walked), counter-clockwise first.
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        let (mut lent_faces, mut kept) = ([None, None], 0);
+        let mut lent_faces = [None, None];
         for ccw in [true, false] {
             let lent_face = lent(id, ccw);
             #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-            if let Some(face) = lent_face {
-                lent_faces[usize::from(!ccw)] = Some(face);
+            {
+                lent_faces[usize::from(!ccw)] = lent_face;
             }
             if let Some(face) = lent_face.unwrap_or_else(|| neighbour(&support, v, id, facing, ccw)) {
                 let cos = face.normal.dot(facing);
                 if cos > best {
                     best = cos;
                     side.face = Some(face);
-                    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-                    {
-                        kept = usize::from(!ccw);
-                    }
                 }
             }
         }
@@ -142,7 +138,7 @@ impl<R: Real> Side<R> {
             // lies on the face's line, as `along_line` would find it with a
             // support.
             #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-            if let Some(back) = lent_faces[1 - kept] {
+            if let Some(back) = lent_faces[usize::from(face.ccw)] {
                 if let Some(back) = back.filter(|back| beyond_on_line(face.other, v, back.other)) {
                     (side.support, side.support_id) = (back.other, back.other_id);
                 }
