@@ -300,9 +300,16 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let n = items.len();
         let (mut i, mut lower) = (0, R::INFINITY);
         for (k, c) in items.iter().enumerate() {
-            if c.edge_distance() < lower {
-                i = k;
-                lower = c.edge_distance();
+            let closer = c.edge_distance() < lower;
+            if cfg!(target_os = "none") {
+                if closer {
+                    (i, lower) = (k, c.edge_distance());
+                }
+            } else {
+                // Selected, not branched on, where a predictor would miss:
+                // which corner leads is as unpredictable as the shapes.
+                i = core::hint::select_unpredictable(closer, k, i);
+                lower = if closer { c.edge_distance() } else { lower };
             }
         }
         let j = if i + 1 >= n { 0 } else { i + 1 };
@@ -330,9 +337,16 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         // B by `reach` against `normal` separates the cores. Reported as the
         // result, so depth and normal always belong together (the closest
         // chord's normal can be off where the chord is not a face).
-        if reach < upper {
-            upper = reach;
-            best = normal;
+        if cfg!(target_os = "none") {
+            if reach < upper {
+                upper = reach;
+                best = normal;
+            }
+        } else {
+            // Selected: whether a support lowers the bound is a coin toss.
+            let lowered = reach < upper;
+            best = if lowered { normal } else { best };
+            upper = if lowered { reach } else { upper };
         }
         // A support equal to an end of the edge: exactly no progress (equal
         // vertex ids give equal points, computed the same way). As one
