@@ -389,6 +389,7 @@ impl<R: Real> Axes<R> {
     }
 
     /// Whether an axis separates the polygons (touching does not).
+    #[inline(always)]
     pub fn separated(&self) -> bool {
         self.least.iter().fold(false, |any, &s| any | (s > R::ZERO))
     }
@@ -396,6 +397,7 @@ impl<R: Real> Axes<R> {
     /// The least overlap along a unit normal, and that normal (from A
     /// towards B): the penetration depth and normal of overlapping
     /// polygons. Ties go to the first axis, A's before B's.
+    #[inline(always)]
     pub fn penetration(&self) -> (R, V2<R>) {
         let (separation, best) = self.separations();
         penetration_along(separation[best], self.normals[best])
@@ -419,6 +421,7 @@ impl<R: Real> Axes<R> {
 
     /// The axis that separates the polygons the most, measured unscaled
     /// (a cheap pick: any axis that separates proves it).
+    #[inline(always)]
     pub fn most_separating(&self) -> usize {
         first_max(&self.least)
     }
