@@ -177,6 +177,7 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     // Shifted by swaps of neighbours, not `Vec::insert`, whose overlapping
     // copy would link `memmove` into a firmware for this alone. An index
     // past the end leaves the corner last (`move_item` stops at the end).
+    #[cfg_attr(not(any(target_os = "none", target_family = "wasm")), inline(always))]
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
         if self.push(c).is_err() {
             return false;
