@@ -177,6 +177,7 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     // Shifted by swaps of neighbours, not `Vec::insert`, whose overlapping
     // copy would link `memmove` into a firmware for this alone. An index
     // past the end leaves the corner last (`move_item` stops at the end).
+    // Inlined on hosts, where a call passed the corner through memory.
     #[cfg_attr(not(any(target_os = "none", target_family = "wasm")), inline(always))]
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool {
         if self.push(c).is_err() {
@@ -302,6 +303,8 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let (mut i, mut lower) = (0, R::INFINITY);
         for (k, c) in items.iter().enumerate() {
             let closer = c.edge_distance() < lower;
+            // Bare metal has no predictor to miss: its branch stays, and so
+            // does its firmware's code.
             if cfg!(target_os = "none") {
                 if closer {
                     (i, lower) = (k, c.edge_distance());
