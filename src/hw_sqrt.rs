@@ -1,4 +1,5 @@
-//! f32 square root in one instruction on hard-float ARM.
+//! Square roots in one instruction, where libm does not give one the
+//! compiler can see: f32 on hard-float ARM, f32 and f64 on x86-64.
 //!
 //! libm has no ARM path: on a Cortex-M4F its `sqrtf` is the portable integer
 //! algorithm, whose code and table every firmware that normalises a vector
@@ -51,10 +52,43 @@ pub(crate) fn sqrtf(x: f32) -> f32 {
     unsafe { gjk2d_vsqrtf(x) }
 }
 
-/// Elsewhere libm's, which uses the hardware instruction on x86, aarch64
-/// and wasm.
-#[cfg(not(all(target_arch = "arm", target_abi = "eabihf")))]
+/// On x86-64 SSE2's instruction through its intrinsic, which the compiler
+/// knows for a square root. libm's is inline assembly there, opaque to the
+/// compiler: a root asked for twice was computed twice, and none was
+/// scheduled or combined with the code around it.
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(crate) fn sqrtf(x: f32) -> f32 {
+    use core::arch::x86_64::{_mm_cvtss_f32, _mm_set_ss, _mm_sqrt_ss};
+    // SAFETY: compiled only where the build enables SSE2 (and with it SSE),
+    // so the processor executes these instructions.
+    unsafe { _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))) }
+}
+
+/// The f64 square root, as [`sqrtf`].
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+#[inline(always)]
+#[allow(unsafe_code)]
+pub(crate) fn sqrt(x: f64) -> f64 {
+    use core::arch::x86_64::{_mm_cvtsd_f64, _mm_set_sd, _mm_sqrt_pd};
+    // SAFETY: as in `sqrtf`.
+    unsafe { _mm_cvtsd_f64(_mm_sqrt_pd(_mm_set_sd(x))) }
+}
+
+/// Elsewhere libm's, which uses the hardware instruction on aarch64 and
+/// wasm (and on x86 without SSE2, the x87's).
+#[cfg(not(any(
+    all(target_arch = "arm", target_abi = "eabihf"),
+    all(target_arch = "x86_64", target_feature = "sse2")
+)))]
 #[inline(always)]
 pub(crate) fn sqrtf(x: f32) -> f32 {
     libm::sqrtf(x)
+}
+
+#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+#[inline(always)]
+pub(crate) fn sqrt(x: f64) -> f64 {
+    libm::sqrt(x)
 }

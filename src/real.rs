@@ -672,7 +672,7 @@ macro_rules! impl_real {
 }
 
 impl_real!(f32, glam::Vec2, crate::hw_sqrt::sqrtf, crate::trig::sin_cos_f32, libm::atan2f, 4097.0, 1.0e15);
-impl_real!(f64, glam::DVec2, libm::sqrt, sin_cos_f64, libm::atan2, 134_217_729.0, 1.0e150);
+impl_real!(f64, glam::DVec2, crate::hw_sqrt::sqrt, sin_cos_f64, libm::atan2, 134_217_729.0, 1.0e150);
 
 /// The separation along an axis's unit normal, from its normal (not unit)
 /// and least reach; minus infinity for an axis with no normal (a slot past
