@@ -60,12 +60,11 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
         let outer_t = outer_numerator / outer_denominator;
         outer_exit[i] = core::hint::select_unpredictable(outer_denominator > R::ZERO, outer_t, max);
     }
-    let mut entry = 0;
+    let entry = latest_entry(&lower);
     let mut exit = upper[0];
     let mut inner = Span { lower: inner_lower[0], upper: inner_upper[0] };
     let mut latest_exit = outer_exit[0];
     for i in 1..M {
-        entry = core::hint::select_unpredictable(lower[i] > lower[entry], i, entry);
         exit = exit.min(upper[i]);
         inner = Span { lower: inner.lower.max(inner_lower[i]), upper: inner.upper.min(inner_upper[i]) };
         latest_exit = latest_exit.min(outer_exit[i]);
@@ -82,6 +81,24 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     let normal = (next[entry] - v[entry]).perp_cw().try_normalize().unwrap_or(-d);
     let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, latest_exit);
     RayCast::closed_form(edge_hit(o, d, t, exit, (v[entry], next[entry]), normal, gap))
+}
+
+/// The lane of the latest entry: the one a scan from lane 0 keeps, taking
+/// a lane only when it is greater (the first of ties; never a NaN, and a
+/// NaN in lane 0 is never left). Found by halving the lanes, not by that
+/// scan, whose selects each waited for the one before: the cast's longest
+/// wait.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn latest_entry<R: Real>(lower: &[R; SMALL_POLYGON_MAX]) -> usize {
+    let mut ranked = *lower;
+    for (i, value) in ranked.iter_mut().enumerate() {
+        #[allow(clippy::eq_op)]
+        if *value != *value {
+            *value = if i == 0 { R::INFINITY } else { -R::INFINITY };
+        }
+    }
+    super::first_max(&ranked)
 }
 
 /// An edge by its two ends, counter-clockwise.
@@ -388,5 +405,39 @@ impl<R: Real> Clip<R> {
                 edge_hit(self.o, self.d, t, self.span.upper, edge, normal, gap)
             }
         })
+    }
+}
+
+#[cfg(all(test, not(any(target_os = "none", target_family = "wasm"))))]
+mod tests {
+    use super::{latest_entry, SMALL_POLYGON_MAX};
+
+    /// The scan the halving replaces.
+    fn scanned(lower: &[f64; SMALL_POLYGON_MAX]) -> usize {
+        let mut entry = 0;
+        for i in 1..SMALL_POLYGON_MAX {
+            if lower[i] > lower[entry] {
+                entry = i;
+            }
+        }
+        entry
+    }
+
+    /// Every array of eight lanes drawn from values that tie, order, and
+    /// poison comparisons (NaN, both infinities, both zeros): the same lane.
+    #[test]
+    fn latest_entry_is_the_scans_lane() {
+        let values = [f64::NAN, -f64::INFINITY, f64::INFINITY, -0.0, 0.0, 1.0, 2.0];
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..200_000 {
+            let mut lower = [0.0; SMALL_POLYGON_MAX];
+            for lane in &mut lower {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                *lane = values[(state % values.len() as u64) as usize];
+            }
+            assert_eq!(latest_entry(&lower), scanned(&lower), "{lower:?}");
+        }
     }
 }
