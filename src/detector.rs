@@ -11,8 +11,10 @@ use crate::epa::{Epa, PenetrationSolver};
 use crate::error::Error;
 use crate::gjk::{intersect, CoreProximity, CoreSeparation, Enclosing};
 use crate::impact::{advance, Sweep, TimeOfImpact};
-use crate::minkowski::Pair;
+use crate::minkowski::{Pair, SupportPoint};
 use crate::point_cores::PointCores;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::quad_start::QuadStart;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, FeatureId, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
@@ -266,6 +268,12 @@ impl<R: Real, P> Gjk<R, P> {
                     }
                     None => {}
                 }
+                // Counted as one iteration: the four supports are one round.
+                match crate::quad_start::quad_start(pair) {
+                    QuadStart::Apart => return None,
+                    QuadStart::Enclosing(ref quad) => return Some(solved_from(&self.solver, pair, quad, 1)),
+                    QuadStart::Undecided => {}
+                }
             }
             if let Some(ref axes) = crate::sat::Axes::of_segment_and_polygon(pair) {
                 match rounded_axes(pair, axes) {
@@ -468,17 +476,26 @@ impl<R: Real, P> Gjk<R, P> {
         // Polygons past eight vertices: the penetration query's walked
         // answer, asked once. Overlapping by far more than rounding, the
         // distance query certainly finds no separation, and GJK need not run.
-        let walked = if P::SEPARATING_AXES && pair.small_polygons().is_none() {
-            pair.polygon_cores().and_then(|(pa, pb)| match crate::walked_axes::penetration(&pair, pa, pb) {
-                Some(Walked::Overlapping(depth, normal)) => Some((depth, normal)),
-                _ => None,
-            })
+        let axes = if P::SEPARATING_AXES && pair.small_polygons().is_none() {
+            pair.polygon_cores().map(|(pa, pb)| crate::walked_axes::penetration(&pair, pa, pb))
         } else {
             None
+        };
+        let walked = match axes {
+            Some(Some(Walked::Overlapping(depth, normal))) => Some((depth, normal)),
+            _ => None,
         };
         if let Some((depth, normal)) = walked {
             if depth > R::from_u32(256) * R::EPSILON * pair.scale() {
                 return Some(overlapping(separating_axes_penetration(&pair, depth, normal)));
+            }
+        }
+        // Polygons too large to walk: the penetration query's four
+        // supports, where they enclose the origin (by far more than
+        // rounding, so again GJK need not run).
+        if let Some(None) = axes {
+            if let QuadStart::Enclosing(ref quad) = crate::quad_start::quad_start(&pair) {
+                return Some(overlapping(solved_from(&self.solver, &pair, quad, 1)));
             }
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
@@ -1227,12 +1244,31 @@ where
     B: SupportMap<R> + ?Sized,
     P: PenetrationSolver<R>,
 {
-    let estimate = solver.solve(pair, enclosing.points());
+    solved_from(solver, pair, enclosing.points(), enclosing.iterations)
+}
+
+/// The penetration of cores that overlap, from the solver started on
+/// `points` (counter-clockwise, enclosing the origin) found in
+/// `iterations`, the radii added.
+#[inline(always)]
+fn solved_from<R, A, B, P>(
+    solver: &P,
+    pair: &Pair<'_, R, A, B>,
+    points: &[SupportPoint<R>],
+    iterations: u32,
+) -> Penetration<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+    P: PenetrationSolver<R>,
+{
+    let estimate = solver.solve(pair, points);
     Penetration {
         normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
         depth: estimate.depth + pair.radius(),
         error_bound: estimate.error_bound,
-        iterations: enclosing.iterations + estimate.iterations,
+        iterations: iterations + estimate.iterations,
         status: estimate.status,
     }
 }

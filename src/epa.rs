@@ -38,6 +38,10 @@ pub trait PenetrationSolver<R: Real> {
     /// when the program is compiled, may be answered by their separating
     /// axes instead of [`solve`](Self::solve) (exact, no iteration; on hosts
     /// only). EPA allows it; a solver of your own is asked unless it says so.
+    ///
+    /// A solver that allows it is also started, for two larger polygons,
+    /// from four supports in place of GJK's simplex where they enclose the
+    /// origin: `simplex` then holds 4 points, counter-clockwise.
     const SEPARATING_AXES: bool = false;
 
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R>;

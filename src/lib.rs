@@ -64,6 +64,8 @@ mod point_cores;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 mod point_polygon;
 mod polytope;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod quad_start;
 mod ray;
 mod real;
 mod result;

@@ -3,13 +3,16 @@
 //! answer stopped at its limit carries an `error_bound` that holds. In f32
 //! and f64 (one macro, one suite per precision).
 //!
-//! Two families:
+//! Three families:
 //! - dense polygons: 256 to 4096 vertices on ellipses and circles of many
 //!   aspect ratios (nearly round ones have long, nearly collinear runs of
 //!   vertices whose dot products tie to rounding), exact in f32, in world
 //!   coordinates with identity transforms; intersection, distance,
 //!   penetration and ray casts against the exact oracle (`gjk2d_oracle`),
 //!   within `8 eps L`;
+//! - large polygons (33 to 200 vertices) with their types known, where the
+//!   penetration query starts from four supports: against the oracle, and
+//!   against the same query through trait objects (GJK's start);
 //! - the round-ellipse cases: an ellipse of equal axes (a disk, so
 //!   the exact oracle answers it) around a circle's centre. Curved shapes
 //!   at large, against every shape, are `tests/curved.rs`.
@@ -88,11 +91,13 @@ macro_rules! certified_suite {
             }
 
             /// Checks `intersects`, `distance` and `penetration` of A and B
-            /// (identity transforms) against the exact signed distance.
-            fn check_pair(
+            /// (identity transforms) against the exact signed distance:
+            /// through trait objects (`&dyn SupportMap`) or with the shapes'
+            /// types known, whose paths differ.
+            fn check_pair<A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized>(
                 what: &str,
-                a: &dyn SupportMap<R>,
-                b: &dyn SupportMap<R>,
+                a: &A,
+                b: &B,
                 truth: &Truth,
             ) -> Result<(), String> {
                 let gjk = Gjk::<R>::new();
@@ -159,7 +164,7 @@ macro_rules! certified_suite {
                 let exact = pair(&ExactShape::from(&Shape::Polygon(pa.clone())), &ExactShape::from(&Shape::Polygon(pb)));
                 let truth = Truth { signed: exact.signed_distance, bound: 8.0 * EPS * l };
                 let what = format!("seed {seed:#x}: {na} (aspect {aa}) against {nb} (aspect {ab}) vertices");
-                check_pair(&what, &*a, &*b, &truth)?;
+                check_pair::<dyn SupportMap<R>, dyn SupportMap<R>>(&what, &*a, &*b, &truth)?;
                 // Rays from up to 3 units away, aimed within half the minor
                 // axis of A's reference point's side of its centre.
                 let exact_a = ExactShape::from(&Shape::Polygon(pa));
@@ -194,6 +199,59 @@ macro_rules! certified_suite {
                             return Err(format!("{what}: ray {k} {o:?} -> {d:?}: {other:?}, exact hit at {}", exact.t));
                         }
                         _ => {}
+                    }
+                }
+                Ok(())
+            }
+
+            /// One pair of polygons too large for the walked axes (33 to 200
+            /// vertices), their types known when compiled: the penetration
+            /// query starts from four supports where they decide (apart, or
+            /// enclosing the origin), else from GJK, as the manifold does.
+            /// Deep, shallow, touching and apart; every query against the
+            /// oracle, then the penetration against the same query through
+            /// trait objects (GJK's start): the same verdict beyond the bound
+            /// and, on the same face, the same depth within it; and the
+            /// manifold's normal the penetration's.
+            fn large_pair(seed: u64) -> Result<(), String> {
+                let mut rng = Rng(seed);
+                let pick = |rng: &mut Rng| {
+                    let n = 33 + (rng.next() % 168) as usize;
+                    (n, ASPECTS[(rng.next() % ASPECTS.len() as u64) as usize])
+                };
+                let ((na, aa), (nb, ab)) = (pick(&mut rng), pick(&mut rng));
+                let ca = ((rng.range(-4.0, 4.0) / STEP) as i64, (rng.range(-4.0, 4.0) / STEP) as i64);
+                // A quarter deep, the rest around touching (the reach of two
+                // such ellipses along a line lies between 2 aspect and 2).
+                let gap = if rng.next() % 4 == 0 { rng.range(0.0, 0.6) } else { rng.range(0.6, 2.2) };
+                let angle = rng.range(0.0, TAU);
+                let cb = (ca.0 + (gap * angle.cos() / STEP) as i64, ca.1 + (gap * angle.sin() / STEP) as i64);
+                let (pa, pb) = (dense_polygon(&mut rng, na, aa, ca), dense_polygon(&mut rng, nb, ab, cb));
+                let vertices = |points: &[Pt]| points.iter().map(|&p| v(p)).collect::<Vec<$vec>>();
+                let a = Polygon::<R, 256>::new(&vertices(&pa)).expect("convex");
+                let b = Polygon::<R, 256>::new(&vertices(&pb)).expect("convex");
+                let centers = norm(sub(pt(b.reference_point() + b.center()), pt(a.reference_point() + a.center())));
+                let l = (a.bounding_radius() as f64).max(b.bounding_radius() as f64).max(centers);
+                let exact = pair(&ExactShape::from(&Shape::Polygon(pa)), &ExactShape::from(&Shape::Polygon(pb)));
+                let truth = Truth { signed: exact.signed_distance, bound: 8.0 * EPS * l };
+                let what = format!("seed {seed:#x}: {na} (aspect {aa}) against {nb} (aspect {ab}), gap {gap}");
+                check_pair(&what, &a, &b, &truth)?;
+                let (gjk, id) = (Gjk::<R>::new(), Transform::IDENTITY);
+                let known = gjk.penetration(&a, &id, &b, &id);
+                let (da, db): (&dyn SupportMap<R>, &dyn SupportMap<R>) = (&a, &b);
+                let through_dyn = gjk.penetration(da, &id, db, &id);
+                match (known, through_dyn) {
+                    (Some(k), Some(d)) if k.normal == d.normal && (k.depth as f64 - d.depth as f64).abs() > truth.bound => {
+                        return Err(format!("{what}: depth {} known, {} through dyn, same normal", k.depth, d.depth));
+                    }
+                    (Some(_), None) | (None, Some(_)) if exact.signed_distance.abs() > truth.bound => {
+                        return Err(format!("{what}: {known:?} known, {through_dyn:?} through dyn"));
+                    }
+                    _ => {}
+                }
+                if let (Some(p), Ok(m)) = (known, gjk.manifold(&a, &id, &b, &id, 0.0)) {
+                    if !m.points().is_empty() && (m.normal, m.iterations) != (p.normal, p.iterations) {
+                        return Err(format!("{what}: manifold {m:?}, penetration {p:?}"));
                     }
                 }
                 Ok(())
@@ -263,7 +321,8 @@ macro_rules! certified_suite {
                     );
                     let l = a.max(r + norm(c));
                     let truth = Truth { signed: exact.signed_distance, bound: curved * l + 8.0 * EPS * l };
-                    if let Err(e) = check_pair(&format!("ellipse {a} around circle {c:?} r {r}"), &ellipse, &circle, &truth) {
+                    let what = format!("ellipse {a} around circle {c:?} r {r}");
+                    if let Err(e) = check_pair::<dyn SupportMap<R>, dyn SupportMap<R>>(&what, &ellipse, &circle, &truth) {
                         failures.push(e);
                     }
                 }
@@ -285,6 +344,13 @@ macro_rules! certified_suite {
                 #[test]
                 fn dense_polygons(seed in any::<u64>()) {
                     let result = dense_pair(seed);
+                    prop_assert!(result.is_ok(), "{}", result.unwrap_err());
+                }
+
+                /// Large polygons, types known: 600 pairs per precision.
+                #[test]
+                fn large_polygons_known(seed in any::<u64>()) {
+                    let result = large_pair(seed);
                     prop_assert!(result.is_ok(), "{}", result.unwrap_err());
                 }
 

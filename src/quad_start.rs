@@ -1,0 +1,66 @@
+//! The penetration of two polygon cores started without GJK: the supports
+//! of their difference along the centers' offset, square to it both ways
+//! and against it. The four are independent, so the processor looks them
+//! up side by side, where GJK's iterations wait on one another; most pairs
+//! that overlap have a difference that encloses the origin in them (then
+//! the solver starts from the four), and most pairs apart are apart along
+//! the first (then there is no penetration).
+//!
+//! Host only, as the other closed forms: a firmware keeps its code.
+
+use crate::minkowski::{MinkowskiVertex, Pair, SupportPoint};
+use crate::real::{Real, V2};
+use crate::shape::SupportMap;
+
+/// What the four supports decided.
+pub(crate) enum QuadStart<R: Real> {
+    /// The cores are apart by more than rounding and have no radius: no
+    /// penetration (GJK would find the same separating plane or a better one).
+    Apart,
+    /// The four supports, counter-clockwise, enclose the origin by more than
+    /// rounding: the penetration solver's start.
+    Enclosing([SupportPoint<R>; 4]),
+    /// Neither, within rounding: GJK decides.
+    Undecided,
+}
+
+/// `|x| + |y|`: at least the length, with no square root.
+#[inline(always)]
+fn l1<R: Real>(v: V2<R>) -> R {
+    v.x.abs() + v.y.abs()
+}
+
+/// The four supports of the pair's cores and what they decide. Margins of
+/// 64 eps of the coordinates' size (twice each bounding radius about its
+/// reference point, and B's offset): far above the rounding of a support's
+/// dot product or an edge's cross product.
+#[inline(always)]
+pub(crate) fn quad_start<R, A, B>(pair: &Pair<'_, R, A, B>) -> QuadStart<R>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    let u = pair.first_direction;
+    let size = R::from_u32(8) * pair.scale() + l1(pair.pose().2);
+    let margin = R::from_u32(64) * R::EPSILON * size;
+    let first = pair.support_shared(u);
+    // The first support's plane separates the origin: apart.
+    if pair.radius() == R::ZERO && first.w.dot(u) < -margin * l1(u) {
+        return QuadStart::Apart;
+    }
+    let turned = u.perp();
+    let quad = [first, pair.support_shared(turned), pair.support_shared(-u), pair.support_shared(-turned)];
+    // Supports along directions turning counter-clockwise are counter-
+    // clockwise on the boundary: the origin is inside where it lies left
+    // of every edge, each cross product above its rounding.
+    let encloses = (0..4).all(|k| {
+        let (p, q) = (quad[k].w, quad[(k + 1) % 4].w);
+        p.cross(q) > margin * (l1(q - p) + size)
+    });
+    if !encloses {
+        return QuadStart::Undecided;
+    }
+    let point = |v: &MinkowskiVertex<R>| SupportPoint { point: v.w.to_glam(), id: v.id };
+    QuadStart::Enclosing(quad.each_ref().map(point))
+}
