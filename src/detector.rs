@@ -271,7 +271,7 @@ impl<R: Real, P> Gjk<R, P> {
                 // Counted as one iteration: the four supports are one round.
                 match crate::quad_start::quad_start(pair) {
                     QuadStart::Apart => return None,
-                    QuadStart::Enclosing(ref quad) => return Some(solved_from(&self.solver, pair, quad, 1)),
+                    QuadStart::Enclosing(ref quad) => return Some(solved_from(&self.solver, pair, quad, || 1)),
                     QuadStart::Undecided => {}
                 }
             }
@@ -495,7 +495,7 @@ impl<R: Real, P> Gjk<R, P> {
         // rounding, so again GJK need not run).
         if let Some(None) = axes {
             if let QuadStart::Enclosing(ref quad) = crate::quad_start::quad_start(&pair) {
-                return Some(overlapping(solved_from(&self.solver, &pair, quad, 1)));
+                return Some(overlapping(solved_from(&self.solver, &pair, quad, || 1)));
             }
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
@@ -1244,18 +1244,20 @@ where
     B: SupportMap<R> + ?Sized,
     P: PenetrationSolver<R>,
 {
-    solved_from(solver, pair, enclosing.points(), enclosing.iterations)
+    solved_from(solver, pair, enclosing.points(), || enclosing.iterations)
 }
 
 /// The penetration of cores that overlap, from the solver started on
 /// `points` (counter-clockwise, enclosing the origin) found in
-/// `iterations`, the radii added.
+/// `iterations`, the radii added. The count is asked for after the solver
+/// has run, as it was before this function existed: read before, it took
+/// a register across the call and moved firmware's figures.
 #[inline(always)]
 fn solved_from<R, A, B, P>(
     solver: &P,
     pair: &Pair<'_, R, A, B>,
     points: &[SupportPoint<R>],
-    iterations: u32,
+    iterations: impl FnOnce() -> u32,
 ) -> Penetration<R>
 where
     R: Real,
@@ -1268,7 +1270,7 @@ where
         normal: pair.to_world_vector(V2::from_glam(estimate.normal)),
         depth: estimate.depth + pair.radius(),
         error_bound: estimate.error_bound,
-        iterations: iterations + estimate.iterations,
+        iterations: iterations() + estimate.iterations,
         status: estimate.status,
     }
 }
