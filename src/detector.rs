@@ -1250,8 +1250,8 @@ where
 /// The penetration of cores that overlap, from the solver started on
 /// `points` (counter-clockwise, enclosing the origin) found in
 /// `iterations`, the radii added. The count is asked for after the solver
-/// has run, as it was before this function existed: read before, it took
-/// a register across the call and moved firmware's figures.
+/// has run: read before, it would hold a register across the call, and
+/// every query it is inlined into would be allocated otherwise.
 #[inline(always)]
 fn solved_from<R, A, B, P>(
     solver: &P,
