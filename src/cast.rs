@@ -244,8 +244,7 @@ where
     let n = entry.normal;
     let a = if radius_a > R::ZERO { a - n * radius_a } else { a };
     let b = if radius_b > R::ZERO { b + n * radius_b } else { b };
-    let extent = |v: V2<R>| v.x.abs() + v.y.abs();
-    let size = extent(pair.centers) + R::TWO * scale;
+    let size = pair.centers.l1() + R::TWO * scale;
     let hit = CastHit {
         fraction: (s / length).min(R::ONE),
         distance: s,

@@ -506,7 +506,7 @@ impl<R: Real, P> Gjk<R, P> {
                 // within rounding of touching (a margin far above it here):
                 // the penetration query's answer is then the one to give.
                 let offset = pair.pose().2;
-                let reach = R::TWO * pair.scale() + offset.x.abs() + offset.y.abs() + pair.radius();
+                let reach = R::TWO * pair.scale() + offset.l1() + pair.radius();
                 let near = s.distance <= s.error_bound + R::from_u32(1024) * R::EPSILON * reach;
                 if near && segment_within_small_polygon(&pair) == Some(true) {
                     return self.penetration_of(&pair).map(overlapping);
@@ -1004,9 +1004,7 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
 #[cfg_attr(target_os = "none", inline(never))]
 fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R>, size: R) -> R {
     let eps = R::EPSILON;
-    // |x| + |y| for a length: no square root, at most 1.42 times as long.
-    let sum = |v: V2<R>| v.x.abs() + v.y.abs();
-    let across = gap + R::from_u32(8) * eps * (sum(origin) + sum(reference) + size + t);
+    let across = gap + R::from_u32(8) * eps * (origin.l1() + reference.l1() + size + t);
     let cap = t + R::TWO * size + gap;
     let cos = cos - R::TWO * eps;
     let bound = if cos * cap > across { across / cos + R::from_u32(4) * eps * t } else { cap };

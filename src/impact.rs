@@ -306,7 +306,6 @@ where
     let pair = Pair::new(a, ta, b, tb);
     let local = ta.inverse_rotate(n);
     let w = pair.support_shared(-local).w;
-    let extent = |v: V2<R>| v.x.abs() + v.y.abs();
-    let size = extent(pair.centers) + extent(w) + R::TWO * pair.scale();
+    let size = pair.centers.l1() + w.l1() + R::TWO * pair.scale();
     local.dot(w) - pair.radius() - R::from_u32(8) * R::EPSILON * size
 }

@@ -475,6 +475,15 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.centers.length_squared() > reach * reach * (R::ONE + R::from_u32(16) * R::EPSILON)
     }
 
+    /// The size of the pair's coordinates in its frame, for margins of
+    /// rounding: twice each bounding radius (a vertex from the reference
+    /// point) and B's offset.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn coordinates_size(&self) -> R {
+        R::from_u32(8) * self.scale() + self.offset.l1()
+    }
+
     /// Each shape's bounding radius about its center.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]

@@ -9,7 +9,7 @@
 //! Host only, as the other closed forms: a firmware keeps its code.
 
 use crate::minkowski::{MinkowskiVertex, Pair, SupportPoint};
-use crate::real::{Real, V2};
+use crate::real::Real;
 use crate::shape::SupportMap;
 
 /// What the four supports decided.
@@ -24,12 +24,6 @@ pub(crate) enum QuadStart<R: Real> {
     Undecided,
 }
 
-/// `|x| + |y|`: at least the length, with no square root.
-#[inline(always)]
-fn l1<R: Real>(v: V2<R>) -> R {
-    v.x.abs() + v.y.abs()
-}
-
 /// The four supports of the pair's cores and what they decide. Margins of
 /// 64 eps of the coordinates' size (twice each bounding radius about its
 /// reference point, and B's offset): far above the rounding of a support's
@@ -42,11 +36,11 @@ where
     B: SupportMap<R> + ?Sized,
 {
     let u = pair.first_direction;
-    let size = R::from_u32(8) * pair.scale() + l1(pair.pose().2);
+    let size = pair.coordinates_size();
     let margin = R::from_u32(64) * R::EPSILON * size;
     let first = pair.support_shared(u);
     // The first support's plane separates the origin: apart.
-    if pair.radius() == R::ZERO && first.w.dot(u) < -margin * l1(u) {
+    if pair.radius() == R::ZERO && first.w.dot(u) < -margin * u.l1() {
         return QuadStart::Apart;
     }
     let turned = u.perp();
@@ -56,7 +50,7 @@ where
     // of every edge, each cross product above its rounding.
     let encloses = (0..4).all(|k| {
         let (p, q) = (quad[k].w, quad[(k + 1) % 4].w);
-        p.cross(q) > margin * (l1(q - p) + size)
+        p.cross(q) > margin * ((q - p).l1() + size)
     });
     if !encloses {
         return QuadStart::Undecided;

@@ -75,7 +75,7 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     // each new x as the ray advances.
     let mut simplex = Simplex::empty_like(vertex(o, o));
     let mut iterations = 0;
-    let origin_size = o.x.abs() + o.y.abs();
+    let origin_size = o.l1();
     let status = loop {
         // Or within the rounding of the ray point itself (`o + d lambda`): a
         // ray from far away cannot place it closer, and would spin to its

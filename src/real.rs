@@ -823,6 +823,12 @@ impl<R: Real> V2<R> {
     pub fn max_abs(self) -> R {
         self.x.abs().max(self.y.abs())
     }
+    /// `|x| + |y|`: at least the length, with no square root, for margins
+    /// of rounding.
+    #[inline(always)]
+    pub fn l1(self) -> R {
+        self.x.abs() + self.y.abs()
+    }
 }
 
 impl<R: Real> Add for V2<R> {

@@ -136,12 +136,6 @@ mod small {
     /// lead over the rest is what lets a step skip the others.
     pub(super) const LEADERS: usize = 4;
 
-    /// `|x| + |y|`: at least the length, with no square root.
-    #[inline(always)]
-    fn l1<R: Real>(v: V2<R>) -> R {
-        v.x.abs() + v.y.abs()
-    }
-
     /// Offset `c` of B's center from A's (in A's frame) in B's frame.
     #[inline(always)]
     fn seen_from_b<R: Real>(cos: R, sin: R, c: V2<R>) -> V2<R> {
@@ -180,7 +174,7 @@ mod small {
         (0..3).all(|k| {
             let (p, q) = (w[k], w[(k + 1) % 3]);
             let inside = p.cross(q) * sign;
-            area != R::ZERO && inside > margin * (l1(q - p) + size)
+            area != R::ZERO && inside > margin * ((q - p).l1() + size)
         })
     }
 
@@ -198,16 +192,6 @@ mod small {
             Some(MinkowskiVertex { w: pb - pa, a: pa, b: pb, id })
         }
 
-        /// The size of the pair's coordinates in its frame: twice each
-        /// bounding radius (a vertex from the reference point) and B's offset.
-        fn size<A, B>(pair: &Pair<'_, R, A, B>) -> R
-        where
-            A: SupportMap<R> + ?Sized,
-            B: SupportMap<R> + ?Sized,
-        {
-            R::from_u32(8) * pair.scale() + l1(pair.pose().2)
-        }
-
         /// Whether the cached triangle of ids still encloses the origin, by
         /// more than rounding.
         fn encloses<A, B>(&self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> bool
@@ -220,7 +204,7 @@ mod small {
             // line, once a vertex.
             let [p, q, r] = [w(self.ids[0]), w(self.ids[1]), w(self.ids[2])];
             let (Some(p), Some(q), Some(r)) = (p, q, r) else { return false };
-            let size = Self::size(pair);
+            let size = pair.coordinates_size();
             surely_encloses([p, q, r], R::from_u32(ROUNDING) * R::EPSILON * size, size)
         }
 
@@ -235,7 +219,7 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            let size = Self::size(pair);
+            let size = pair.coordinates_size();
             let margin = R::from_u32(ROUNDING) * R::EPSILON * size;
             let (slot, u) = axes.least_overlap_by_square();
             let face = polygons.face_triangle(slot, u);
@@ -258,7 +242,7 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            let margin = R::from_u32(ROUNDING) * R::EPSILON * Self::size(pair);
+            let margin = R::from_u32(ROUNDING) * R::EPSILON * pair.coordinates_size();
             separates_by(pair, a, b, self.separating as usize, margin)
         }
 
@@ -364,7 +348,7 @@ mod small {
             self.separating = NO_ID;
             self.pose = [cos, sin, c.x, c.y, from_b.x, from_b.y];
             self.radii = [radius_a, radius_b];
-            self.reach = R::TWO * (l1(centre_a) + l1(c) + radius_a + radius_b);
+            self.reach = R::TWO * (centre_a.l1() + c.l1() + radius_a + radius_b);
             if lead > self.moved {
                 (self.leaders, self.lead, self.fingerprint) = (leaders, lead, fingerprint(a, b));
             } else {

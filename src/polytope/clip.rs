@@ -238,8 +238,7 @@ impl<R: Real> FaceRounding<R> {
     /// shape of bounding radius at most `size`.
     #[inline(always)]
     pub fn new(o: V2<R>, reference: V2<R>, size: R) -> Self {
-        let sum = |v: V2<R>| v.x.abs() + v.y.abs();
-        Self { across: R::from_u32(8) * R::EPSILON * (sum(o) + sum(reference) + size), size }
+        Self { across: R::from_u32(8) * R::EPSILON * (o.l1() + reference.l1() + size), size }
     }
 }
 
@@ -261,7 +260,7 @@ impl<R: Real> FaceRounding<R> {
 
     #[inline(always)]
     fn moved(&self, normal: V2<R>, numerator: R, denominator: R, inwards: R) -> (R, R) {
-        let length = (normal.x.abs() + normal.y.abs()) * inwards;
+        let length = normal.l1() * inwards;
         (numerator - self.across * length, denominator + R::from_u32(8) * R::EPSILON * length)
     }
 
