@@ -163,19 +163,29 @@ mod small {
         (sum ^ (sum >> 32)).wrapping_mul(MIX)
     }
 
-    /// Whether triangle `w` encloses the origin by more than `margin`
-    /// (times each edge's length, by [`l1`], plus the coordinates' size
-    /// `size`, which covers the cross products' own rounding). Inlined:
-    /// out of line, the cached intersection test read slower.
+    /// Whether the counter-clockwise triangle `w` encloses the origin by
+    /// more than `margin` (times each edge's length, by `|x| + |y|`, plus
+    /// the coordinates' size `size`, which covers the cross products' own
+    /// rounding). A clockwise one fails: the origin lies left of its edges
+    /// nowhere. Inlined, with no branch on any of the three (most cached
+    /// triangles pass all three).
     #[inline(always)]
     fn surely_encloses<R: Real>(w: [V2<R>; 3], margin: R, size: R) -> bool {
-        let area = (w[1] - w[0]).cross(w[2] - w[0]);
-        let sign = if area > R::ZERO { R::ONE } else { -R::ONE };
-        (0..3).all(|k| {
+        let inside = |k: usize| {
             let (p, q) = (w[k], w[(k + 1) % 3]);
-            let inside = p.cross(q) * sign;
-            area != R::ZERO && inside > margin * ((q - p).l1() + size)
-        })
+            p.cross(q) > margin * ((q - p).l1() + size)
+        };
+        inside(0) & inside(1) & inside(2)
+    }
+
+    /// Triangle `w` and its ids counter-clockwise: the second and third
+    /// swapped where it turns the other way. By selects, as the
+    /// orientation of a pair's triangle is a coin toss.
+    #[inline(always)]
+    fn counter_clockwise<R: Real>(w: [(V2<R>, u32); 3]) -> [(V2<R>, u32); 3] {
+        let clockwise = (w[1].0 - w[0].0).cross(w[2].0 - w[0].0) < R::ZERO;
+        let (second, third) = core::hint::select_unpredictable(clockwise, (w[2], w[1]), (w[1], w[2]));
+        [w[0], second, third]
     }
 
     impl<R: Real> PairCache<R> {
@@ -192,8 +202,8 @@ mod small {
             Some(MinkowskiVertex { w: pb - pa, a: pa, b: pb, id })
         }
 
-        /// Whether the cached triangle of ids still encloses the origin, by
-        /// more than rounding.
+        /// Whether the cached triangle of ids (kept counter-clockwise) still
+        /// encloses the origin, by more than rounding.
         fn encloses<A, B>(&self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> bool
         where
             A: SupportMap<R> + ?Sized,
@@ -222,13 +232,14 @@ mod small {
             let size = pair.coordinates_size();
             let margin = R::from_u32(ROUNDING) * R::EPSILON * size;
             let (slot, u) = axes.least_overlap_by_square();
-            let face = polygons.face_triangle(slot, u);
+            let face = counter_clockwise(polygons.face_triangle(slot, u));
             if surely_encloses(face.map(|s| s.0), margin, size) {
                 self.ids = face.map(|s| s.1);
                 return;
             }
             let d = pair.first_direction;
-            let supports = [polygons.support(d), polygons.support(d.perp_cw()), polygons.support(-d.perp_cw())];
+            let supports =
+                counter_clockwise([polygons.support(d), polygons.support(d.perp_cw()), polygons.support(-d.perp_cw())]);
             self.ids =
                 if surely_encloses(supports.map(|s| s.0), margin, size) { supports.map(|s| s.1) } else { [NO_ID; 3] };
         }
