@@ -9,7 +9,7 @@
 //! Host only, as the other closed forms: a firmware keeps its code.
 
 use crate::minkowski::{MinkowskiVertex, Pair, SupportPoint};
-use crate::real::Real;
+use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 
 /// What the four supports decided.
@@ -46,15 +46,23 @@ where
     let turned = u.perp();
     let quad = [first, pair.support_shared(turned), pair.support_shared(-u), pair.support_shared(-turned)];
     // Supports along directions turning counter-clockwise are counter-
-    // clockwise on the boundary: the origin is inside where it lies left
-    // of every edge, each cross product above its rounding.
-    let encloses = (0..4).all(|k| {
-        let (p, q) = (quad[k].w, quad[(k + 1) % 4].w);
-        p.cross(q) > margin * ((q - p).l1() + size)
-    });
-    if !encloses {
+    // clockwise on the boundary.
+    if !surely_encloses(&quad.each_ref().map(|v| v.w), margin, size) {
         return QuadStart::Undecided;
     }
     let point = |v: &MinkowskiVertex<R>| SupportPoint { point: v.w.to_glam(), id: v.id };
     QuadStart::Enclosing(quad.each_ref().map(point))
+}
+
+/// Whether the counter-clockwise polygon `w` encloses the origin by more
+/// than `margin` (times each edge's length, by `|x| + |y|`, plus the
+/// coordinates' size `size`, which covers the cross products' own
+/// rounding): the origin left of every edge. A clockwise one fails. Every
+/// edge is tested, with no branch between them: most polygons asked pass.
+#[inline(always)]
+pub(crate) fn surely_encloses<R: Real, const K: usize>(w: &[V2<R>; K], margin: R, size: R) -> bool {
+    (0..K).fold(true, |inside, k| {
+        let (p, q) = (w[k], w[(k + 1) % K]);
+        inside & (p.cross(q) > margin * ((q - p).l1() + size))
+    })
 }

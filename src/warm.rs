@@ -119,6 +119,7 @@ mod small {
     use super::PairCache;
     use crate::minkowski::{MinkowskiVertex, Pair, NO_ID};
     use crate::polytope::first_max;
+    use crate::quad_start::surely_encloses;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
     use crate::sat::{face_and_vertex_by, penetration_along, separates_by, Axes, Coordinates, FaceAndVertex, Polygons};
@@ -163,21 +164,6 @@ mod small {
         (sum ^ (sum >> 32)).wrapping_mul(MIX)
     }
 
-    /// Whether the counter-clockwise triangle `w` encloses the origin by
-    /// more than `margin` (times each edge's length, by `|x| + |y|`, plus
-    /// the coordinates' size `size`, which covers the cross products' own
-    /// rounding). A clockwise one fails: the origin lies left of its edges
-    /// nowhere. Inlined, with no branch on any of the three (most cached
-    /// triangles pass all three).
-    #[inline(always)]
-    fn surely_encloses<R: Real>(w: [V2<R>; 3], margin: R, size: R) -> bool {
-        let inside = |k: usize| {
-            let (p, q) = (w[k], w[(k + 1) % 3]);
-            p.cross(q) > margin * ((q - p).l1() + size)
-        };
-        inside(0) & inside(1) & inside(2)
-    }
-
     /// Triangle `w` and its ids counter-clockwise: the second and third
     /// swapped where it turns the other way. By selects, as the
     /// orientation of a pair's triangle is a coin toss.
@@ -215,7 +201,7 @@ mod small {
             let [p, q, r] = [w(self.ids[0]), w(self.ids[1]), w(self.ids[2])];
             let (Some(p), Some(q), Some(r)) = (p, q, r) else { return false };
             let size = pair.coordinates_size();
-            surely_encloses([p, q, r], R::from_u32(ROUNDING) * R::EPSILON * size, size)
+            surely_encloses(&[p, q, r], R::from_u32(ROUNDING) * R::EPSILON * size, size)
         }
 
         /// A triangle of vertices of B - A that encloses the origin by more
@@ -233,7 +219,7 @@ mod small {
             let margin = R::from_u32(ROUNDING) * R::EPSILON * size;
             let (slot, u) = axes.least_overlap_by_square();
             let face = counter_clockwise(polygons.face_triangle(slot, u));
-            if surely_encloses(face.map(|s| s.0), margin, size) {
+            if surely_encloses(&face.map(|s| s.0), margin, size) {
                 self.ids = face.map(|s| s.1);
                 return;
             }
@@ -241,7 +227,7 @@ mod small {
             let supports =
                 counter_clockwise([polygons.support(d), polygons.support(d.perp_cw()), polygons.support(-d.perp_cw())]);
             self.ids =
-                if surely_encloses(supports.map(|s| s.0), margin, size) { supports.map(|s| s.1) } else { [NO_ID; 3] };
+                if surely_encloses(&supports.map(|s| s.0), margin, size) { supports.map(|s| s.1) } else { [NO_ID; 3] };
         }
 
         /// Whether the cached separating axis (there must be one) still
