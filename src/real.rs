@@ -196,8 +196,119 @@ mod sse2 {
 
     #[inline(always)]
     pub fn first_max_dot_f64(v: &[V2<f64>], d: V2<f64>) -> usize {
+        if v.len() <= WIDE_SCAN_MAX && wide() {
+            // SAFETY: `wide` found AVX2 on this processor, its wide
+            // registers saved by the operating system.
+            return unsafe { wide_max_f64(v, d) };
+        }
         // SAFETY: as above.
         unsafe { running_max_f64(v, d) }
+    }
+
+    /// Up to this many vertices (the dots the wide scan keeps), an f64
+    /// scan runs four lanes wide where the processor can.
+    const WIDE_SCAN_MAX: usize = 64;
+
+    /// Whether this processor runs AVX2 and its operating system saves the
+    /// wide registers: asked of the processor once, then read from memory.
+    #[inline(always)]
+    fn wide() -> bool {
+        use core::sync::atomic::{AtomicU8, Ordering};
+        static KNOWN: AtomicU8 = AtomicU8::new(0);
+        match KNOWN.load(Ordering::Relaxed) {
+            1 => false,
+            2 => true,
+            _ => {
+                let found = detect_wide();
+                KNOWN.store(if found { 2 } else { 1 }, Ordering::Relaxed);
+                found
+            }
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn detect_wide() -> bool {
+        // Leaf 1: AVX (ECX bit 28) and OSXSAVE (bit 27), the operating
+        // system's use of XSAVE, which makes XGETBV available.
+        let features = cpuid(1, 0);
+        if features.ecx & (1 << 27) == 0 || features.ecx & (1 << 28) == 0 {
+            return false;
+        }
+        // SAFETY: OSXSAVE is set, so XGETBV runs; XCR0 bits 1 and 2 say
+        // the operating system saves the SSE and AVX registers.
+        if unsafe { enabled_state() } & 0b110 != 0b110 {
+            return false;
+        }
+        // Leaf 7, subleaf 0: AVX2 (EBX bit 5), where the processor has leaf 7.
+        cpuid(0, 0).eax >= 7 && cpuid(7, 0).ebx & (1 << 5) != 0
+    }
+
+    /// `CPUID`, which older compilers this crate supports declare unsafe.
+    #[allow(unused_unsafe)]
+    fn cpuid(leaf: u32, subleaf: u32) -> CpuidResult {
+        // SAFETY: every x86-64 processor has CPUID, and a leaf it lacks
+        // reads as another leaf's values, never a fault.
+        unsafe { __cpuid_count(leaf, subleaf) }
+    }
+
+    /// The two-lane scan's answer, and the wide one's where the processor
+    /// has it: for the test that holds them to the scalar scan.
+    #[cfg(test)]
+    pub fn both_f64(v: &[V2<f64>], d: V2<f64>) -> (usize, Option<usize>) {
+        // SAFETY: as in `first_max_dot_f64`.
+        let wide = (v.len() <= WIDE_SCAN_MAX && wide()).then(|| unsafe { wide_max_f64(v, d) });
+        // SAFETY: as above.
+        (unsafe { running_max_f64(v, d) }, wide)
+    }
+
+    #[target_feature(enable = "xsave")]
+    fn enabled_state() -> u64 {
+        // SAFETY: the caller has seen OSXSAVE set, so XGETBV runs, and
+        // register 0 (XCR0) always exists.
+        unsafe { _xgetbv(0) }
+    }
+
+    /// [`running_max_f64`] four lanes wide: the dots of eight vertices a
+    /// step, all kept, and the first equal to their maximum found from
+    /// one mask a register. A register pair's dots come out of the lane
+    /// shuffles as vertices 0, 2, 1, 3 and are put back in order.
+    #[target_feature(enable = "avx,avx2")]
+    #[inline]
+    fn wide_max_f64(v: &[V2<f64>], d: V2<f64>) -> usize {
+        let (dx, dy) = (_mm256_set1_pd(d.x), _mm256_set1_pd(d.y));
+        let dots = |c: &[V2<f64>]| {
+            let a = _mm256_setr_pd(c[0].x, c[0].y, c[1].x, c[1].y);
+            let b = _mm256_setr_pd(c[2].x, c[2].y, c[3].x, c[3].y);
+            let (xs, ys) = (_mm256_unpacklo_pd(a, b), _mm256_unpackhi_pd(a, b));
+            let sums = _mm256_add_pd(_mm256_mul_pd(xs, dx), _mm256_mul_pd(ys, dy));
+            _mm256_permute4x64_pd::<0b11_01_10_00>(sums)
+        };
+        let mut best = [_mm256_set1_pd(f64::NEG_INFINITY); 2];
+        let mut kept = [_mm256_setzero_pd(); WIDE_SCAN_MAX / 4];
+        let mut chunks = v.chunks_exact(8);
+        for (slots, c) in kept.chunks_exact_mut(2).zip(&mut chunks) {
+            let (low, high) = (dots(&c[..4]), dots(&c[4..]));
+            slots.copy_from_slice(&[low, high]);
+            best[0] = _mm256_max_pd(low, best[0]);
+            best[1] = _mm256_max_pd(high, best[1]);
+        }
+        let m = _mm256_max_pd(best[0], best[1]);
+        let m = _mm_max_pd(_mm256_castpd256_pd128(m), _mm256_extractf128_pd::<1>(m));
+        let m = _mm_max_pd(m, _mm_shuffle_pd::<0b01>(m, m));
+        let top = chunks.remainder().iter().fold(_mm_cvtsd_f64(m), |top, p| {
+            let dot = p.dot(d);
+            core::hint::select_unpredictable(dot > top, dot, top)
+        });
+        let wanted = _mm256_set1_pd(top);
+        let whole = 2 * (v.len() / 8);
+        let equal = kept.iter().take(whole).enumerate().fold(0u64, |bits, (k, &x)| {
+            bits | u64::from(_mm256_movemask_pd(_mm256_cmp_pd::<_CMP_EQ_OQ>(x, wanted)) as u32) << (4 * k)
+        });
+        if equal != 0 {
+            return equal.trailing_zeros() as usize;
+        }
+        first_equal(chunks.remainder(), 4 * whole, d, top)
     }
 
     /// The first vertex of largest dot product, in two passes: the maximum
@@ -862,6 +973,7 @@ impl<R: Real> Mul<R> for V2<R> {
 
 #[cfg(all(test, target_arch = "x86_64", target_feature = "sse2"))]
 mod tests {
+    extern crate std;
     use super::lesser;
 
     /// The scalar fold that hosts without SSE2 run: every axis folds the
@@ -909,6 +1021,39 @@ mod tests {
             let scalar = folded(&nx, &ny, &xs, &ys, f64::INFINITY);
             assert_eq!(lanes, scalar, "{nx:?} {ny:?} {xs:?} {ys:?}");
         }
+    }
+
+    /// Both SIMD support scans of f64 vertices (two lanes, and four where
+    /// the processor has AVX2) give the scalar scan's vertex: the first of
+    /// the largest dots, over every length up to past the wide scan's, with
+    /// many ties.
+    #[test]
+    fn f64_scans_find_the_scalar_scans_vertex() {
+        use super::V2;
+        let mut seed = 5;
+        let mut wide_ran = 0;
+        for round in 0..40_000 {
+            let len: usize = 1 + round % 72;
+            let coordinates: std::vec::Vec<f64> = (0..len.div_ceil(4) + 1).flat_map(|_| values(&mut seed)).collect();
+            let v: std::vec::Vec<V2<f64>> =
+                (0..len).map(|i| V2::new(coordinates[2 * i], coordinates[2 * i + 1])).collect();
+            let [d] = [values(&mut seed)].map(|d| V2::new(d[0], d[1]));
+            let scalar = (0..len).fold((0, f64::NEG_INFINITY), |(best, top), i| {
+                let dot = v[i].x * d.x + v[i].y * d.y;
+                if dot > top {
+                    (i, dot)
+                } else {
+                    (best, top)
+                }
+            });
+            let (two, four) = super::sse2::both_f64(&v, d);
+            assert_eq!(two, scalar.0, "{v:?} {d:?}");
+            if let Some(four) = four {
+                assert_eq!(four, scalar.0, "{v:?} {d:?}");
+                wide_ran += 1;
+            }
+        }
+        std::println!("the wide scan ran {wide_ran} times");
     }
 
     /// Separations in lanes are `scaled_separation`'s, to the bit: zero
