@@ -484,7 +484,7 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: us
 mod tests {
     extern crate std;
 
-    use super::{pair_support_near, polytope_support_near, V2};
+    use super::{pair_support_near, polytope_support, polytope_support_between, polytope_support_near, V2};
     use crate::real::Real;
     use std::vec::Vec;
 
@@ -535,5 +535,46 @@ mod tests {
     #[test]
     fn pairs_search_as_each_alone_f64() {
         pairs_search_as_each_alone::<f64>();
+    }
+
+    /// A support searched on the arc between two known supports (as EPA
+    /// asks for one) is the one the whole polygon's scan finds, on arcs
+    /// short enough to be searched alone and on longer ones, and from ends
+    /// given the wrong way round.
+    fn arcs_search_as_the_whole<R: Real>() {
+        let mut seed = 5;
+        let (mut alone, mut whole_searched) = (0, 0);
+        for round in 0..3000 {
+            let v = polygon::<R>(&mut seed, 17 + round % 300);
+            let turn = |t: f64| V2::new(R::from_f64(t.cos()), R::from_f64(t.sin()));
+            let start = round as f64 * 0.37;
+            let spread = [0.05, 0.3, 1.5, 3.0][round % 4];
+            let (from, to) = (
+                polytope_support::<R, 1024>(&v, turn(start)).0,
+                polytope_support::<R, 1024>(&v, turn(start + spread)).0,
+            );
+            let length = (to + v.len() - from) % v.len();
+            if v.len() > super::ARC_SEARCH_MIN && length <= super::ARC_SEARCH_MAX {
+                alone += 1;
+            } else {
+                whole_searched += 1;
+            }
+            for k in 1..8 {
+                let d = turn(start + spread * f64::from(k) / 8.0);
+                let whole = polytope_support::<R, 1024>(&v, d).0;
+                let arc = polytope_support_between(&v, d, from as u32, to as u32).0;
+                assert_eq!(arc, whole, "round {round}, k {k}, arc {from} to {to} of {}", v.len());
+                // Ends given the wrong way round: the climb catches it.
+                let other = polytope_support_between(&v, d, to as u32, from as u32).0;
+                assert_eq!(other, whole, "round {round}, k {k}, arc {to} to {from} of {}", v.len());
+            }
+        }
+        assert!(alone > 1000 && whole_searched > 100, "{alone} arcs searched alone, {whole_searched} not");
+    }
+
+    #[test]
+    fn arcs_search_as_the_whole_in_both_precisions() {
+        arcs_search_as_the_whole::<f32>();
+        arcs_search_as_the_whole::<f64>();
     }
 }
