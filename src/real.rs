@@ -252,8 +252,8 @@ mod sse2 {
         unsafe { __cpuid_count(leaf, subleaf) }
     }
 
-    /// The two-lane scan's answer, and the wide one's where the processor
-    /// has it: for the test that holds them to the scalar scan.
+    /// The SSE2 scan's answer, and the wide one's where the processor has
+    /// it: for the test that holds them to the scalar scan.
     #[cfg(test)]
     pub fn both_f64(v: &[V2<f64>], d: V2<f64>) -> (usize, Option<usize>) {
         // SAFETY: as in `first_max_dot_f64`.
@@ -1023,12 +1023,25 @@ mod tests {
         }
     }
 
-    /// Both SIMD support scans of f64 vertices (two lanes, and four where
-    /// the processor has AVX2) give the scalar scan's vertex: the first of
-    /// the largest dots, over every length up to past the wide scan's, with
-    /// many ties.
+    /// The first vertex of largest dot product, by a scalar fold.
+    fn scalar_scan<R: super::Real>(v: &[super::V2<R>], d: super::V2<R>) -> usize {
+        let first = |(best, top): (usize, R), (i, p): (usize, &super::V2<R>)| {
+            let dot = p.dot(d);
+            if dot > top {
+                (i, dot)
+            } else {
+                (best, top)
+            }
+        };
+        v.iter().enumerate().fold((0, -R::INFINITY), first).0
+    }
+
+    /// The SIMD support scans (f64's in SSE2, and in AVX2 where the
+    /// processor has it; f32's in SSE2) give the scalar scan's vertex: the
+    /// first of the largest dots, over every length up to past the wide
+    /// scan's, with many ties.
     #[test]
-    fn f64_scans_find_the_scalar_scans_vertex() {
+    fn simd_scans_find_the_scalar_scans_vertex() {
         use super::V2;
         let mut seed = 5;
         let mut wide_ran = 0;
@@ -1038,20 +1051,18 @@ mod tests {
             let v: std::vec::Vec<V2<f64>> =
                 (0..len).map(|i| V2::new(coordinates[2 * i], coordinates[2 * i + 1])).collect();
             let [d] = [values(&mut seed)].map(|d| V2::new(d[0], d[1]));
-            let scalar = (0..len).fold((0, f64::NEG_INFINITY), |(best, top), i| {
-                let dot = v[i].x * d.x + v[i].y * d.y;
-                if dot > top {
-                    (i, dot)
-                } else {
-                    (best, top)
-                }
-            });
             let (two, four) = super::sse2::both_f64(&v, d);
-            assert_eq!(two, scalar.0, "{v:?} {d:?}");
+            assert_eq!(two, scalar_scan(&v, d), "{v:?} {d:?}");
             if let Some(four) = four {
-                assert_eq!(four, scalar.0, "{v:?} {d:?}");
+                assert_eq!(four, scalar_scan(&v, d), "{v:?} {d:?}");
                 wide_ran += 1;
             }
+            // The same in f32, whose values round to ties more often still.
+            let (v, d) = (
+                v.iter().map(|p| V2::new(p.x as f32, p.y as f32)).collect::<std::vec::Vec<_>>(),
+                V2::new(d.x as f32, d.y as f32),
+            );
+            assert_eq!(super::sse2::first_max_dot_f32(&v, d), scalar_scan(&v, d), "{v:?} {d:?}");
         }
         std::println!("the wide scan ran {wide_ran} times");
     }
