@@ -196,8 +196,8 @@ mod sse2 {
 
     #[inline(always)]
     pub fn first_max_dot_f64(v: &[V2<f64>], d: V2<f64>) -> usize {
-        if v.len() <= WIDE_SCAN_MAX && wide() {
-            // SAFETY: `wide` found AVX2 on this processor, its wide
+        if wide_fits(v) {
+            // SAFETY: `wide_fits` found AVX2 on this processor, its wide
             // registers saved by the operating system.
             return unsafe { wide_max_f64(v, d) };
         }
@@ -205,8 +205,16 @@ mod sse2 {
         unsafe { running_max_f64(v, d) }
     }
 
-    /// Up to this many vertices (the dots the wide scan keeps), an f64
-    /// scan runs four lanes wide where the processor can.
+    /// Whether the wide scan runs: where the processor has AVX2 and `v`
+    /// fills one of its steps (eight vertices) and no more than it keeps
+    /// (64). Fewer would be mostly its scalar remainder, more than the
+    /// SSE2 scan's.
+    #[inline(always)]
+    fn wide_fits(v: &[V2<f64>]) -> bool {
+        (8..=WIDE_SCAN_MAX).contains(&v.len()) && wide()
+    }
+
+    /// The most vertices the wide scan keeps the dots of.
     const WIDE_SCAN_MAX: usize = 64;
 
     /// Whether this processor runs AVX2 and its operating system saves the
@@ -257,7 +265,7 @@ mod sse2 {
     #[cfg(test)]
     pub fn both_f64(v: &[V2<f64>], d: V2<f64>) -> (usize, Option<usize>) {
         // SAFETY: as in `first_max_dot_f64`.
-        let wide = (v.len() <= WIDE_SCAN_MAX && wide()).then(|| unsafe { wide_max_f64(v, d) });
+        let wide = wide_fits(v).then(|| unsafe { wide_max_f64(v, d) });
         // SAFETY: as above.
         (unsafe { running_max_f64(v, d) }, wide)
     }
@@ -1050,7 +1058,8 @@ mod tests {
             let coordinates: std::vec::Vec<f64> = (0..len.div_ceil(4) + 1).flat_map(|_| values(&mut seed)).collect();
             let v: std::vec::Vec<V2<f64>> =
                 (0..len).map(|i| V2::new(coordinates[2 * i], coordinates[2 * i + 1])).collect();
-            let [d] = [values(&mut seed)].map(|d| V2::new(d[0], d[1]));
+            let d = values(&mut seed);
+            let d = V2::new(d[0], d[1]);
             let (two, four) = super::sse2::both_f64(&v, d);
             assert_eq!(two, scalar_scan(&v, d), "{v:?} {d:?}");
             if let Some(four) = four {
