@@ -1061,9 +1061,10 @@ mod tests {
             let d = values(&mut seed);
             let d = V2::new(d[0], d[1]);
             let (two, four) = super::sse2::both_f64(&v, d);
-            assert_eq!(two, scalar_scan(&v, d), "{v:?} {d:?}");
+            let expected = scalar_scan(&v, d);
+            assert_eq!(two, expected, "{v:?} {d:?}");
             if let Some(four) = four {
-                assert_eq!(four, scalar_scan(&v, d), "{v:?} {d:?}");
+                assert_eq!(four, expected, "{v:?} {d:?}");
                 wide_ran += 1;
             }
             // The same in f32, whose values round to ties more often still.

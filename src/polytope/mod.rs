@@ -544,9 +544,9 @@ mod tests {
     fn arcs_search_as_the_whole<R: Real>() {
         let mut seed = 5;
         let (mut alone, mut whole_searched) = (0, 0);
+        let turn = |t: f64| V2::new(R::from_f64(t.cos()), R::from_f64(t.sin()));
         for round in 0..3000 {
             let v = polygon::<R>(&mut seed, 17 + round % 300);
-            let turn = |t: f64| V2::new(R::from_f64(t.cos()), R::from_f64(t.sin()));
             let start = round as f64 * 0.37;
             let spread = [0.05, 0.3, 1.5, 3.0][round % 4];
             let (from, to) = (
