@@ -730,9 +730,24 @@ impl<R: Real, P> Gjk<R, P> {
         let reference = V2::from_glam(shape.reference_point());
         // Into the shape's frame, relative to its reference point: the
         // difference first, so a ray near a far-away shape keeps its precision.
-        let origin = transform.inverse_rotate(ray.origin - transform.translation) - reference;
+        #[cfg_attr(not(feature = "far-geometry"), allow(unused_mut))]
+        let (mut origin, mut rounded_reference) =
+            (transform.inverse_rotate(ray.origin - transform.translation) - reference, reference);
+        // Geometry far from its local origin, placed: that difference rounds
+        // at the reference's distance; the origin's gap to the placed
+        // reference, summed error-free, does not. (Not placed, it is one
+        // difference, rounded at the origin's scale.)
+        #[cfg(feature = "far-geometry")]
+        if shape.far_from_origin() {
+            if !transform.is_identity() {
+                let gap = crate::compensated::placed_gap(transform, reference, &Transform::IDENTITY, ray.origin);
+                origin = transform.inverse_rotate(gap);
+            }
+            rounded_reference = V2::zero();
+        }
         let direction = transform.inverse_rotate(ray.direction);
-        let local = if self.closed_form_rays { cast_local_ray(shape, origin, direction, max) } else { None };
+        let local =
+            if self.closed_form_rays { cast_local_ray(shape, origin, direction, max, rounded_reference) } else { None };
         let local = local.unwrap_or_else(|| {
             cast_ray_gjk(
                 shape,
@@ -757,7 +772,7 @@ impl<R: Real, P> Gjk<R, P> {
                     h.distance,
                     V2::from_glam(h.normal).dot(direction).abs(),
                     origin,
-                    reference,
+                    rounded_reference,
                     shape.bounding_radius(),
                 ),
             }),
@@ -980,15 +995,18 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
     origin: V2<R>,
     direction: V2<R>,
     max: R,
+    rounded_reference: V2<R>,
 ) -> Option<RayCast<R>> {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     if Pair::<R, S, S>::shapes_known() {
         if let Some(polygon) = shape.small_polygon() {
-            let reference = V2::from_glam(shape.reference_point());
+            let reference = rounded_reference;
             let rounding = crate::polytope::FaceRounding::new(origin, reference, shape.bounding_radius());
             return Some(crate::polytope::cast_ray_small_polygon(polygon.vertices, origin, direction, max, rounding));
         }
     }
+    #[cfg(any(target_os = "none", target_family = "wasm"))]
+    let _ = rounded_reference;
     shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
 }
 

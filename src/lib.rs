@@ -51,6 +51,8 @@ pub use glam;
 
 mod cast;
 mod checks;
+#[cfg(feature = "far-geometry")]
+mod compensated;
 mod config;
 mod detector;
 mod epa;

@@ -127,6 +127,13 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let references = pair.rotate(reference_b) - reference_a;
         let translations = ta.inverse_rotate(tb.translation - ta.translation);
         pair.offset = translations + references;
+        // Geometry far from its local origin and placed: those terms are
+        // large, round at their own scale and cancel, so the gap between
+        // the placed references is summed error-free instead.
+        #[cfg(feature = "far-geometry")]
+        if (a.far_from_origin() || b.far_from_origin()) && !(ta.is_identity() && tb.is_identity()) {
+            pair.offset = ta.inverse_rotate(crate::compensated::placed_gap(ta, reference_a, tb, reference_b));
+        }
         pair.centers = pair.rotate(V2::from_glam(b.center())) + pair.offset - V2::from_glam(a.center());
         // Towards the origin from B's center minus A's: the point of B - A
         // most likely closest to the origin.

@@ -96,6 +96,12 @@ impl<R: Real> Transform<R> {
     pub(crate) fn inverse_rotate(&self, v: V2<R>) -> V2<R> {
         V2::new(self.cos * v.x + self.sin * v.y, -self.sin * v.x + self.cos * v.y)
     }
+    /// Whether placing by it changes no coordinate.
+    #[cfg(feature = "far-geometry")]
+    #[inline(always)]
+    pub(crate) fn is_identity(&self) -> bool {
+        self.sin == R::ZERO && self.cos == R::ONE && self.translation == V2::zero()
+    }
 }
 
 /// A point must be finite and within [`Real::MAX_COORDINATE`].

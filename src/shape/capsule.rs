@@ -90,6 +90,13 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
     fn reference_point(&self) -> R::Vector {
         self.core.reference_point()
     }
+    #[cfg(feature = "far-geometry")]
+    /// Squared, with no root: `(2 (l / 2 + r))^2 <= 2 l^2 + 8 r^2`, so what
+    /// this calls far is farther than twice the bounding radius.
+    fn far_from_origin(&self) -> bool {
+        let (l2, r) = (self.core.delta.length_squared(), self.radius);
+        self.core.start.length_squared() > R::TWO * l2 + R::from_u32(8) * r * r
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_capsule(V2::zero(), self.core.delta, self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }

@@ -72,4 +72,9 @@ impl<R: Real> SupportMap<R> for Ellipse<R> {
     fn bounding_radius(&self) -> R {
         self.half.x.max(self.half.y)
     }
+    #[cfg(feature = "far-geometry")]
+    /// Centred on the local origin.
+    fn far_from_origin(&self) -> bool {
+        false
+    }
 }

@@ -77,4 +77,9 @@ impl<R: Real> SupportMap<R> for HalfEllipse<R> {
         // |p - c| <= |p| + |c| for every point p of the half ellipse.
         self.axes.x.max(self.axes.y) + self.centroid.y
     }
+    #[cfg(feature = "far-geometry")]
+    /// Centred on the local origin.
+    fn far_from_origin(&self) -> bool {
+        false
+    }
 }

@@ -52,7 +52,7 @@ pub use triangle::Triangle;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 pub use crate::polytope::SMALL_POLYGON_MAX;
 use crate::real::Real;
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[cfg(any(feature = "far-geometry", not(any(target_os = "none", target_family = "wasm"))))]
 use crate::real::V2;
 use crate::result::LocalRayCast;
 
@@ -123,6 +123,18 @@ pub trait SupportMap<R: Real> {
     /// `center` are measured from.
     fn reference_point(&self) -> R::Vector {
         R::vector(R::ZERO, R::ZERO)
+    }
+
+    #[cfg(feature = "far-geometry")]
+    /// Whether the reference point lies more than about twice the bounding
+    /// radius from the local origin (feature `far-geometry` only). A
+    /// rotation about that origin rounds at the reference's distance, not
+    /// at the shape's size, so the queries then place such a shape with
+    /// error-free sums and products. The default asks `reference_point` and
+    /// `bounding_radius`.
+    fn far_from_origin(&self) -> bool {
+        let r = self.bounding_radius();
+        V2::<R>::from_glam(self.reference_point()).length_squared() > R::from_u32(4) * r * r
     }
 
     /// The support point and an id of the vertex it is, for cores that are
@@ -229,6 +241,10 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn reference_point(&self) -> R::Vector {
         (**self).reference_point()
+    }
+    #[cfg(feature = "far-geometry")]
+    fn far_from_origin(&self) -> bool {
+        (**self).far_from_origin()
     }
     fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
         (**self).support_feature(direction, near)

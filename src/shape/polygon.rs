@@ -219,6 +219,10 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     fn reference_point(&self) -> R::Vector {
         self.reference.to_glam()
     }
+    #[cfg(feature = "far-geometry")]
+    fn far_from_origin(&self) -> bool {
+        self.reference.length_squared() > R::from_u32(4) * self.bounding_radius_squared
+    }
     /// Vertex indices below 65535 fit the pair's 16 bits each (65535 there
     /// marks a curve point).
     fn is_polytope(&self) -> bool {
@@ -239,7 +243,13 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
         let size = self.bounding_radius_squared.sqrt();
-        let rounding = FaceRounding::new(o, self.reference, size);
+        // Far from the origin, the ray was placed error-free (see
+        // `Gjk::raycast`): its origin rounds at its own scale only.
+        #[cfg(feature = "far-geometry")]
+        let reference = if self.far_from_origin() { V2::zero() } else { self.reference };
+        #[cfg(not(feature = "far-geometry"))]
+        let reference = self.reference;
+        let rounding = FaceRounding::new(o, reference, size);
         if searched::<N>(self.len) {
             // How far the vertices are from the ray's origin, at most.
             let reach = (self.center - o).length() + size;

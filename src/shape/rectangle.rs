@@ -78,6 +78,11 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
     fn bounding_radius(&self) -> R {
         self.half.length()
     }
+    #[cfg(feature = "far-geometry")]
+    /// Centred on the local origin.
+    fn far_from_origin(&self) -> bool {
+        false
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let o = V2::from_glam(o);
         // |half|_1: at least the bounding radius, with no square root.

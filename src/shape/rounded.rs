@@ -77,4 +77,10 @@ impl<R: Real, S: SupportMap<R>> SupportMap<R> for Rounded<R, S> {
     fn reference_point(&self) -> R::Vector {
         self.inner.reference_point()
     }
+    #[cfg(feature = "far-geometry")]
+    /// The inner shape's answer: far for it is far enough (the radius only
+    /// makes the shape larger).
+    fn far_from_origin(&self) -> bool {
+        self.inner.far_from_origin()
+    }
 }

@@ -89,6 +89,11 @@ impl<R: Real> SupportMap<R> for Segment<R> {
     fn reference_point(&self) -> R::Vector {
         self.start.to_glam()
     }
+    #[cfg(feature = "far-geometry")]
+    /// Twice the bounding radius is the length: compared squared.
+    fn far_from_origin(&self) -> bool {
+        self.start.length_squared() > self.delta.length_squared()
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_segment(V2::zero(), self.delta, V2::from_glam(o), V2::from_glam(d), max))
     }

@@ -62,6 +62,11 @@ impl<R: Real> SupportMap<R> for Slice<R> {
     fn bounding_radius(&self) -> R {
         self.centroid.x.max((self.ends[0] - self.centroid).length())
     }
+    #[cfg(feature = "far-geometry")]
+    /// Centred on the local origin.
+    fn far_from_origin(&self) -> bool {
+        false
+    }
 }
 
 /// How generic code ([`Slice::new`]) reaches the per-type `const`

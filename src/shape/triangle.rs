@@ -64,6 +64,10 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn reference_point(&self) -> R::Vector {
         self.0.reference_point()
     }
+    #[cfg(feature = "far-geometry")]
+    fn far_from_origin(&self) -> bool {
+        self.0.far_from_origin()
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         self.0.cast_local_ray(o, d, max)
     }
