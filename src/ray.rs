@@ -75,13 +75,20 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
     // each new x as the ray advances.
     let mut simplex = Simplex::empty_like(vertex(o, o));
     let mut iterations = 0;
-    let origin_size = o.l1();
     let status = loop {
-        // Or within the rounding of the ray point itself (`o + d lambda`): a
-        // ray from far away cannot place it closer, and would spin to its
-        // limit.
-        let reached = tolerance + R::from_u32(4) * R::EPSILON * (origin_size + lambda);
-        if v.length_squared() <= reached * reached {
+        // Or within the rounding of the ray point itself (`o + d lambda`,
+        // which rounds with its own size and the step's): a ray from far
+        // away cannot place it closer, and would spin to its limit.
+        // The tolerance is the hit's, along the ray: across the surface, it
+        // shrinks with the incidence cos = |v.d| / |v| (down to a half, as
+        // the guarantee holds head-on; towards the tangent the hit is
+        // ill-conditioned anyway). Squared, with no root.
+        let rounding = R::from_u32(2) * R::EPSILON * (x.l1() + lambda);
+        let vv = v.length_squared();
+        let vd = v.dot(d);
+        let incident = (vd * vd).max(vv * R::HALF * R::HALF);
+        let reached = tolerance + rounding;
+        if vv <= rounding * rounding || vv * vv <= reached * reached * incident {
             break Status::Converged;
         }
         if iterations >= max_iterations {

@@ -394,14 +394,15 @@ macro_rules! ray_bounds_suite {
                         stats.head_on_error / EPS,
                         stats.head_on_bound / EPS,
                     ));
-                    // README's figures for head-on hits: the error within the
-                    // guarantee, the bound within 64 eps L more than it allows
-                    // for the iteration (rounding counted at its worst); 160
-                    // on polygons, whose hits near a vertex also bound an
-                    // entry through the face beyond it.
+                    // docs/accuracy.md's figures for head-on hits: the error
+                    // within the guarantee, the bound within 128 eps L more
+                    // than it allows for the iteration (its rounding terms,
+                    // each at most 2 L, over cos >= 0.5); 256 on polygons,
+                    // whose hits near a vertex also bound an entry through
+                    // the face beyond it.
                     let (curved, error_allowed) = if kind == Kind::Ellipse { (CURVED, CURVED) } else { (0.0, 8.0 * EPS) };
                     let polygon = matches!(kind, Kind::Gon8 | Kind::Gon64);
-                    let bound_allowed = curved + if polygon { 160.0 } else { 64.0 } * EPS;
+                    let bound_allowed = curved + if polygon { 256.0 } else { 128.0 } * EPS;
                     if !(stats.head_on_bound <= bound_allowed && stats.head_on_error <= error_allowed) {
                         failures.push(format!(
                             "{kind:?} {family}: head-on error {:e} L (allowed {error_allowed:e} L), bound {:e} L (allowed {bound_allowed:e} L)",
