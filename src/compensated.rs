@@ -38,8 +38,9 @@ fn split<R: Real>(a: R) -> (R, R) {
 /// `sum + prod.0 * prod.1 ...` as if in twice the precision, then rounded:
 /// within an ulp or so of the exact value, plus `(n eps)^2` of the terms'
 /// magnitudes (Ogita, Rump and Oishi's Sum2 over the products' exact
-/// halves).
-#[inline(always)]
+/// halves). One copy for both components on bare metal, where flash counts.
+#[cfg_attr(target_os = "none", inline(never))]
+#[cfg_attr(not(target_os = "none"), inline(always))]
 fn accurate_sum<R: Real>(sums: [R; 2], products: [(R, R); 4]) -> R {
     let (mut s, mut tail) = two_sum(sums[0], sums[1]);
     for (a, b) in products {
