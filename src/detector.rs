@@ -406,10 +406,9 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        // Bare metal and wasm ask the two queries in turn, which keeps both
-        // the deepest frame and the module smaller than one shared GJK run.
-        // An early return, not a `match`: that held both frames' results
-        // in this one, and deepened the manifold's stack.
+        // Bare metal and wasm ask the two queries in turn, each in a frame
+        // freed before the next runs, so the deepest stack is one query's;
+        // an early return rather than a `match`, so no frame holds both.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         {
             if let Some(s) = in_own_frame(|| self.distance(a, ta, b, tb)) {
@@ -1000,8 +999,7 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     if Pair::<R, S, S>::shapes_known() {
         if let Some(polygon) = shape.small_polygon() {
-            let reference = rounded_reference;
-            let rounding = crate::polytope::FaceRounding::new(origin, reference, shape.bounding_radius());
+            let rounding = crate::polytope::FaceRounding::new(origin, rounded_reference, shape.bounding_radius());
             return Some(crate::polytope::cast_ray_small_polygon(polygon.vertices, origin, direction, max, rounding));
         }
     }

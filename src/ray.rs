@@ -99,7 +99,6 @@ pub(crate) fn cast_ray_gjk<R: Real, S: SupportMap<R> + ?Sized>(
         let w = x - p;
         let vw = v.dot(w);
         if vw > R::ZERO {
-            let vd = v.dot(d);
             if vd >= R::ZERO {
                 return RayCast { outcome: RayOutcome::Miss, iterations, status: Status::Converged };
             }
