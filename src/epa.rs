@@ -416,9 +416,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
 /// direction, `s(u) . perp(u)`, vanishes there, and a safeguarded secant finds
 /// that root between the normals of the neighbouring edges in a few support
 /// calls. The answer is an achievable translation (the boundary is reached
-/// along it) and `error_bound` stays the certified gap to EPA's lower bound.
-/// Polytope regions, or a polish that does not bracket a minimum, keep EPA's
-/// answer and its status.
+/// along it) and `error_bound` stays the certified gap to EPA's lower bound;
+/// it keeps EPA's status unless that gap is within the tolerance. Polytope
+/// regions, or a polish that does not bracket a minimum, keep EPA's answer.
 #[allow(clippy::too_many_arguments)]
 fn finish_curved<R: Real, S: Storage<R>>(
     polytope: &S,
@@ -507,7 +507,12 @@ fn finish_curved<R: Real, S: Storage<R>>(
     if depth > upper {
         return fallback;
     }
-    estimate(u, depth, (depth - lower).max(R::ZERO), iterations, Status::Converged)
+    // Converged only where EPA's lower bound certifies it: the polish finds
+    // a local minimum of `h`, and a nearly round difference can have a
+    // second, deeper one in a cone EPA had not refined.
+    let gap = (depth - lower).max(R::ZERO);
+    let status = if gap <= tolerance { Status::Converged } else { fallback.status };
+    estimate(u, depth, gap, iterations, status)
 }
 
 /// The support function `h(u)` along `u` and its slope `s(u) . perp(u)`:

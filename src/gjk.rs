@@ -146,9 +146,10 @@ where
             return CoreProximity::Overlapping { simplex, iterations };
         }
         // |v| grew: only rounding can do that, and the simplex is as close as
-        // it gets (within rounding of the previous one). It still takes the
-        // support below: the lower bound so far was measured along earlier
-        // directions, and near a vertex the direction can have turned a lot.
+        // it gets (within rounding of the previous one), unless the bounds
+        // are still apart (see `retry` below). It still takes the support:
+        // the lower bound so far was measured along earlier directions, and
+        // near a vertex the direction can have turned a lot.
         // A tie is not a stall: the next support then repeats a vertex.
         let stalled = vv > previous;
         // No progress, and no support plane so far has separated the origin
@@ -192,7 +193,17 @@ where
         // the distance); the loop goes on until `v`'s plane agrees too. Never
         // on polytopes, whose last plane is the best.
         let short = curved && bound < lower_bound - tolerance;
-        if stalled || ((repeat || gap_closed) && !short) {
+        // A stall with the bounds still apart beyond the tolerance, or with
+        // `v`'s plane short, at a curve point: rounding hid a gain the new
+        // support can still make (a flat edge of the difference ending in a
+        // tight curve, where supports alternate between the edge's far end
+        // and the curve, each step gaining less than rounding). It is
+        // pushed, as exact arithmetic would; the limit still bounds the loop.
+        let retry = stalled && w.id == NO_ID && (length - lower_bound > tolerance || short);
+        if retry && iterations > max_iterations {
+            break (v, Status::IterationLimit);
+        }
+        if (stalled && !retry) || ((repeat || gap_closed) && !short) {
             break (v, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));

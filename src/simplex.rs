@@ -4,7 +4,8 @@
 //! Closest points are computed in the form that keeps the most precision: on
 //! an edge, `v = n (n . w1) / (n . n)` with `n` perpendicular to the edge, so
 //! `v` is exactly normal to the edge's direction and no `w1 + t (w2 - w1)`
-//! cancellation is spent on it.
+//! cancellation is spent on it; `w1` is the end nearer the origin, so the
+//! product rounds at the near end's magnitude, not at the far one's.
 //!
 //! The simplex is generic over what each vertex carries besides its point
 //! and id: the intersection test carries nothing (`()`), the distance query
@@ -255,7 +256,9 @@ impl<R: Real, P> Simplex<R, P> {
             // normal comes out as exactly (0, +-1) or (+-1, 0), so axis-aligned
             // contacts give exact distances (a touching pair gives exactly 0).
             if let Some(unit) = (q.w - p.w).perp().try_normalize() {
-                let signed = unit.dot(p.w);
+                // From the end nearer the origin, whose product cancels least.
+                let near = if p.w.length_squared() <= q.w.length_squared() { p.w } else { q.w };
+                let signed = unit.dot(near);
                 let size = p.w.x.abs() + p.w.y.abs() + q.w.x.abs() + q.w.y.abs();
                 let rounding = R::from_u32(64) * R::EPSILON * size;
                 let outward = if signed.abs() <= rounding { unit.dot(toward) >= R::ZERO } else { signed > R::ZERO };
@@ -431,5 +434,8 @@ fn segment_foot_body<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     if !(sum > R::ZERO && sum.is_finite()) {
         return if p_nearer { (Foot::AtFirst, p) } else { (Foot::AtSecond, q) };
     }
-    (Foot::Between(Weights { first: toward_p, second: toward_q, sum }), n * (n.dot(p) / nn))
+    // From the end nearer the origin: `n . p` cancels to the edge's small
+    // distance, and a far end rounds at its own magnitude.
+    let near = if p_nearer { p } else { q };
+    (Foot::Between(Weights { first: toward_p, second: toward_q, sum }), n * (n.dot(near) / nn))
 }

@@ -758,3 +758,91 @@ fn segment_inside_needle_slice_f32() {
         (-2.60260009765625, [-0.2672390937805176, 0.691437840461731]),
     );
 }
+
+/// A triangle 1.8e-7 (5.6e-6 L) from an ellipse of aspect 1:90 in f32,
+/// called overlapping. The edge between GJK's first support, 6e-7 from the
+/// origin, and a far one, 0.035 away, put its closest point as
+/// `n (n . far) / (n . n)`: rounded at the far end's magnitude, 1e-2 of
+/// `v` itself, so `-v` picked the far end again, `|v|` grew, and with no
+/// plane yet separating the origin the test said touching. The foot is now
+/// taken from the nearer end.
+#[test]
+fn sliver_ellipse_near_triangle_verdict_f32() {
+    regression(
+        single::check,
+        Kind::Triangle([
+            [0.013424628414213657, 0.01119184959679842],
+            [-0.018289048224687576, 0.0005476198857650161],
+            [0.01604045368731022, -0.007926306687295437],
+        ]),
+        (0.0, [-0.010986234061419964, -0.012498260475695133]),
+        Kind::Ellipse(0.00040215725312009454, 0.0358913317322731),
+        (-2.6182844638824463, [0.014022509567439556, -0.03596879914402962]),
+    );
+}
+
+/// The same in f64: a segment 1e-9 from a half ellipse, called
+/// overlapping.
+#[test]
+fn half_ellipse_near_segment_verdict_f64() {
+    regression(
+        double::check,
+        Kind::Segment([0.8566446827739428, 2.925895499633267], [-0.08566446827739428, -0.2925895499633267]),
+        (-3.0577682623656868, [2.0969895533208254, -3.229125657257552]),
+        Kind::HalfEllipse(2.5182950919818747, 3.179365961537089),
+        (-1.1205624011147903, [2.7058068010506773, -4.06405869944395]),
+    );
+}
+
+/// A thin half ellipse against a capsule in f32: the difference has a flat
+/// edge (the capsule's segment) ending in the dome's tight tip, and GJK's
+/// supports alternated between the edge's far end and the tip, each step
+/// gaining less than rounding. `|v|` grew by an ulp, and the distance
+/// stopped there as converged with its bounds 2.2e-5 apart (the tolerance
+/// is 2e-6). A stall with the bounds apart now takes the new support, as
+/// exact arithmetic would.
+#[test]
+fn thin_half_ellipse_capsule_stall_f32() {
+    regression(
+        single::check,
+        Kind::HalfEllipse(0.11965974420309067, 0.5982987284660339),
+        (0.8014267683029175, [-1.6193724870681763, -1.1513267755508423]),
+        Kind::Capsule(
+            [0.20282569527626038, -1.0558140277862549],
+            [-0.20282569527626038, 1.0558140277862549],
+            0.4627188742160797,
+        ),
+        (0.7054097652435303, [0.08885528147220612, -0.0921773836016655]),
+    );
+}
+
+/// A circle against an ellipse of aspect 1:100 in f32: GJK stalled with
+/// its bounds met but `v`'s own plane 2.7e-6 short of them, and the stall
+/// ended the loop, so the penetration's normal needed 2.8e-6 more than its
+/// depth (the tolerance is 1.4e-6). A stall with `v`'s plane short goes on
+/// too.
+#[test]
+fn sliver_ellipse_circle_normal_after_stall_f32() {
+    regression(
+        single::check,
+        Kind::Circle(0.738764762878418),
+        (0.0, [-0.9650048613548279, 0.012695771642029285]),
+        Kind::Ellipse(0.012209111824631691, 1.2209111452102661),
+        (-2.7727606296539307, [-1.2244101762771606, -0.04399112984538078]),
+    );
+}
+
+/// A slice centred on a nearly round ellipse in f64: EPA stopped at its
+/// limit, and the polish found a local minimum of the support function
+/// 3.2e-7 above the depth, reported as converged. The polished answer now
+/// keeps EPA's status, its error bound (5.2e-6) covering the error.
+#[test]
+fn slice_in_round_ellipse_polish_f64() {
+    regression(
+        double::check,
+        Kind::Slice(12.559733323217374, 0.282133170380125),
+        (3.072973565133452, [30.56451695115341, 11.88043764865815]),
+        Kind::Ellipse(24.506256594935365, 24.530787382317683),
+        (-1.5820475521795077, [30.56451695115341, 11.88043764865815]),
+    );
+}
