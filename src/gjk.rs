@@ -161,7 +161,7 @@ where
             return CoreProximity::Overlapping { simplex, iterations };
         }
         previous = vv;
-        if !stalled && iterations >= max_iterations {
+        if iterations >= max_iterations {
             // With no plane separating the origin, the cores may overlap, by
             // at most the sum of their bounding radii: the bound then says
             // so, and the error bounds made of it hold (a depth lies that
@@ -200,9 +200,6 @@ where
         // and the curve, each step gaining less than rounding). It is
         // pushed, as exact arithmetic would; the limit still bounds the loop.
         let retry = stalled && w.id == NO_ID && (length - lower_bound > tolerance || short);
-        if retry && iterations > max_iterations {
-            break (v, Status::IterationLimit);
-        }
         if (stalled && !retry) || ((repeat || gap_closed) && !short) {
             break (v, Status::Converged);
         }
