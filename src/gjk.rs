@@ -145,13 +145,6 @@ where
         if vv == R::ZERO {
             return CoreProximity::Overlapping { simplex, iterations };
         }
-        // |v| grew: only rounding can do that, and the simplex is as close as
-        // it gets (within rounding of the previous one), unless the bounds
-        // are still apart (see `retry` below). It still takes the support:
-        // the lower bound so far was measured along earlier directions, and
-        // near a vertex the direction can have turned a lot.
-        // A tie is not a stall: the next support then repeats a vertex.
-        let stalled = vv > previous;
         // No progress, and no support plane so far has separated the origin
         // (in exact arithmetic every support then shrinks |v|): the simplex
         // is within rounding of the origin, whose side of it the solve can
@@ -183,7 +176,7 @@ where
         // repeat of one just dropped does so in exact arithmetic too, but
         // rounding can make it happen with the bounds still apart (a core
         // nearly parallel to a face): then the bounds must agree to rounding,
-        // or the loop goes on (the stall guard and the limit still bound it).
+        // or the loop goes on (the limit still bounds it).
         // (The reduction only drops vertices: a repeat of one still in the
         // simplex is a repeat of one before it too.)
         let repeat = repeats(&before, w.id) && (length - lower_bound <= repeat_gap || simplex.ids().contains(&w.id));
@@ -193,14 +186,12 @@ where
         // the distance); the loop goes on until `v`'s plane agrees too. Never
         // on polytopes, whose last plane is the best.
         let short = curved && bound < lower_bound - tolerance;
-        // A stall with the bounds still apart beyond the tolerance, or with
-        // `v`'s plane short, at a curve point: rounding hid a gain the new
-        // support can still make (a flat edge of the difference ending in a
-        // tight curve, where supports alternate between the edge's far end
-        // and the curve, each step gaining less than rounding). It is
-        // pushed, as exact arithmetic would; the limit still bounds the loop.
-        let retry = stalled && w.id == NO_ID && (length - lower_bound > tolerance || short);
-        if (stalled && !retry) || ((repeat || gap_closed) && !short) {
+        // Only the bounds end the loop, not a stall (|v| growing by
+        // rounding): where a flat edge of the difference ends in a tight
+        // curve, supports alternate between the edge's far end and the
+        // curve, each step gaining less than rounding, and the next support
+        // can still close the gap, as in exact arithmetic.
+        if (repeat || gap_closed) && !short {
             break (v, Status::Converged);
         }
         simplex.push(Vertex::from_minkowski(&w));

@@ -239,9 +239,9 @@ impl<R: Real> Simplex<R, Witness<R>> {
 }
 
 impl<R: Real, P> Simplex<R, P> {
-    /// Distance from the origin to the simplex's closest point `v` (as the
-    /// solve gave it) and the unit normal towards it, in the most precise
-    /// form for the face it lies on.
+    /// Distance from the origin to the simplex's closest point `v` and the
+    /// unit normal towards it, in the most precise form for the face it lies
+    /// on.
     /// `toward` (B's center minus A's) orients the normal where the edge's
     /// distance is within rounding of zero (64 eps of its ends' size, |x| +
     /// |y|) and its sign says nothing: convex shapes apart or touching have
@@ -257,9 +257,11 @@ impl<R: Real, P> Simplex<R, P> {
             // normal comes out as exactly (0, +-1) or (+-1, 0), so axis-aligned
             // contacts give exact distances (a touching pair gives exactly 0).
             if let Some(unit) = (q.w - p.w).perp().try_normalize() {
-                // Along `v`, the edge's foot, taken from its end nearer the
-                // origin: a far end's product would round at its magnitude.
-                let signed = unit.dot(v);
+                // From the end nearer the origin: a far end's product
+                // rounds at its own magnitude. (Not `unit . v`: an
+                // axis-aligned edge's exact distance would round.)
+                let near = if p.w.length_squared() <= q.w.length_squared() { p.w } else { q.w };
+                let signed = unit.dot(near);
                 let size = p.w.x.abs() + p.w.y.abs() + q.w.x.abs() + q.w.y.abs();
                 let rounding = R::from_u32(64) * R::EPSILON * size;
                 let outward = if signed.abs() <= rounding { unit.dot(toward) >= R::ZERO } else { signed > R::ZERO };
