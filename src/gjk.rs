@@ -7,8 +7,12 @@
 //! - a certified gap: `|v|` is an upper bound of the distance and
 //!   `w . v / |v|` a lower bound; stop when they are within
 //!   `epsilon * size` (curved cores);
-//! - no progress: `|v|` grew, so rounding has the last word;
-//! - the iteration limit, reported as such.
+//! - no progress with no support plane yet separating the origin: the
+//!   simplex is within rounding of it, touching (and in the intersection
+//!   test, no progress at all: its verdict is all it needs);
+//! - the iteration limit, reported as such. The distance loop goes on
+//!   through a stall while its bounds are apart: rounding can hide a gain
+//!   the next support still makes.
 
 use crate::minkowski::{MinkowskiDifference, MinkowskiVertex, Pair, SupportPoint, NO_ID};
 use crate::real::{Real, V2};
