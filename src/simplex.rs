@@ -439,6 +439,9 @@ fn segment_foot_body<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     }
     // From the end nearer the origin: `n . p` cancels to the edge's small
     // distance, and a far end rounds at its own magnitude.
-    let near = if p_nearer { p } else { q };
-    (Foot::Between(Weights { first: toward_p, second: toward_q, sum }), n * (n.dot(near) / nn))
+    // Both products, then the choice: the nearer end is known only after
+    // the lengths, and GJK's next step waits on this foot.
+    let (from_p, from_q) = (n.dot(p), n.dot(q));
+    let offset = if p_nearer { from_p } else { from_q };
+    (Foot::Between(Weights { first: toward_p, second: toward_q, sum }), n * (offset / nn))
 }
