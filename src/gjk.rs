@@ -8,8 +8,8 @@
 //!   `w . v / |v|` a lower bound; stop when they are within
 //!   `epsilon * size` (curved cores);
 //! - no progress with no support plane yet separating the origin: the
-//!   simplex is within rounding of it, touching (and in the intersection
-//!   test, no progress at all: its verdict is all it needs);
+//!   simplex is within rounding of it, touching (the intersection test
+//!   stops on any lack of progress: apart if a plane has separated);
 //! - the iteration limit, reported as such. The distance loop goes on
 //!   through a stall while its bounds are apart: rounding can hide a gain
 //!   the next support still makes.

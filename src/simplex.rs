@@ -240,9 +240,8 @@ impl<R: Real> Simplex<R, Witness<R>> {
 
 impl<R: Real, P> Simplex<R, P> {
     /// Distance from the origin to the simplex's closest point `v` and the
-    /// unit normal towards it, in the most precise form for the face it lies
-    /// on.
-    /// `toward` (B's center minus A's) orients the normal where the edge's
+    /// unit normal towards it, in the most precise form for the face it
+    /// lies on. `toward` (B's center minus A's) orients the normal where the edge's
     /// distance is within rounding of zero (64 eps of its ends' size, |x| +
     /// |y|) and its sign says nothing: convex shapes apart or touching have
     /// their centers on either side of the line between them, so `toward`
@@ -438,9 +437,9 @@ fn segment_foot_body<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
         return if p_nearer { (Foot::AtFirst, p) } else { (Foot::AtSecond, q) };
     }
     // From the end nearer the origin: `n . p` cancels to the edge's small
-    // distance, and a far end rounds at its own magnitude.
-    // Both products, then the choice: the nearer end is known only after
-    // the lengths, and GJK's next step waits on this foot.
+    // distance, and a far end rounds at its own magnitude. Both products
+    // first, then the choice, which waits on the lengths: GJK's next step
+    // waits on this foot.
     let (from_p, from_q) = (n.dot(p), n.dot(q));
     let offset = if p_nearer { from_p } else { from_q };
     (Foot::Between(Weights { first: toward_p, second: toward_q, sum }), n * (offset / nn))
