@@ -371,8 +371,8 @@ impl<R: Real, P> Gjk<R, P> {
             // would vouch for.
             return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
         };
-        // On bare metal the clipping gets a frame of its own, so that the
-        // queries above never run beneath it.
+        // On bare metal the clipping runs apart from the queries above, so
+        // their stack needs never add up.
         #[cfg(target_os = "none")]
         return in_own_frame(move || {
             let mut manifold = Manifold::empty(normal, iterations, status);
@@ -406,9 +406,8 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
         P: PenetrationSolver<R>,
     {
-        // Bare metal and wasm ask the two queries in turn, each in a frame
-        // freed before the next runs, so the deepest stack is one query's;
-        // an early return rather than a `match`, so no frame holds both.
+        // Bare metal and wasm run the two queries one after the other (an
+        // early return, not a `match`), so their stack needs never add up.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         {
             if let Some(s) = in_own_frame(|| self.distance(a, ta, b, tb)) {
@@ -1330,8 +1329,8 @@ where
 
 /// The penetration of rounded shapes whose cores are apart, in closed form
 /// from the core distance; `None` when the shapes are certainly apart. Not
-/// inlined on bare metal: its working values would widen the frame that
-/// holds GJK's result while GJK runs.
+/// inlined on bare metal, so its working values are not on the stack while
+/// GJK runs.
 #[cfg_attr(target_os = "none", inline(never))]
 fn rounded_overlap<R, A, B, P>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<'_, R, P>) -> Option<Penetration<R>>
 where

@@ -214,8 +214,8 @@ where
     let mut iterations = 0;
     let mut last: Option<(R, Separation<R>)> = None;
     loop {
-        // Made one at a time and borrowed, so that the distance query runs
-        // on a small frame.
+        // Made one at a time and borrowed, to keep the distance query's stack
+        // small.
         let ta = sweep_a.transform_at(t);
         let tb = sweep_b.transform_at(t);
         iterations += 1;
