@@ -744,6 +744,10 @@ impl<R: Real, P> Gjk<R, P> {
             rounded_reference = V2::zero();
         }
         let direction = transform.inverse_rotate(ray.direction);
+        if let Some(radius) = shape.disk_radius().filter(|_| self.closed_form_rays) {
+            let disk = Disk { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() };
+            return disk.cast_placed(ray, max, origin, direction, rounded_reference);
+        }
         let local =
             if self.closed_form_rays { cast_local_ray(shape, origin, direction, max, rounded_reference) } else { None };
         let local = local.unwrap_or_else(|| {
@@ -1007,6 +1011,58 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
     shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
 }
 
+/// A disk in the shape's frame: its center relative to the reference
+/// point, its radius, and the shape's bounding radius.
+struct Disk<R: Real> {
+    center: V2<R>,
+    radius: R,
+    size: R,
+}
+
+impl<R: Real> Disk<R> {
+    /// A ray against the disk, the arithmetic of [`crate::shape::cast_ray_disk`]
+    /// on the ray's local origin and direction, its normal taken from the
+    /// ray's world direction (rotating `d` and `d⊥` rotates the normal with
+    /// them). On hosts every number is taken and the outcome picked by
+    /// selects: which of inside, miss and hit a ray of a scene gives is a
+    /// coin toss a predictor would miss. Bare metal, with no predictor,
+    /// leaves as soon as it knows.
+    #[inline(always)]
+    fn cast_placed(&self, ray: &Ray<R>, max: R, origin: V2<R>, d: V2<R>, reference: V2<R>) -> RayCast<R> {
+        let bare_metal = cfg!(target_os = "none");
+        let (r, m) = (self.radius, origin - self.center);
+        let c = m.length_squared() - r * r;
+        let inside = c <= R::ZERO;
+        if bare_metal && inside {
+            return RayCast::closed_form(RayOutcome::Inside);
+        }
+        let b = m.dot(d);
+        let across = d.cross(m);
+        let p = across.abs();
+        let misses = (b >= R::ZERO) | (p > r);
+        if bare_metal && misses {
+            return RayCast::closed_form(RayOutcome::Miss);
+        }
+        // Past the radius (a miss, picked later on hosts) the chord is
+        // taken as zero: `t` is then anything but NaN, and unused.
+        let chord_squared = (r - p) * (r + p);
+        let half_chord = if bare_metal { chord_squared } else { chord_squared.max(R::ZERO) }.sqrt();
+        let t = c / (-b + half_chord);
+        let inverse_radius = R::ONE / r;
+        let normal = (ray.direction * -half_chord + ray.direction.perp() * across) * inverse_radius;
+        let hit = RayHit {
+            distance: t,
+            point: (ray.origin + ray.direction * t).to_glam(),
+            normal: normal.to_glam(),
+            error_bound: hit_error_bound(R::ZERO, t, half_chord * inverse_radius, origin, reference, self.size),
+        };
+        // A finite hit within the limit, never inf or NaN.
+        let hits = !inside & !misses & (t < R::INFINITY) & (t <= max);
+        let missed = core::hint::select_unpredictable(inside, RayOutcome::Inside, RayOutcome::Miss);
+        RayCast::closed_form(core::hint::select_unpredictable(hits, RayOutcome::Hit(hit), missed))
+    }
+}
+
 /// A hit distance's error bound: what may have moved the boundary across
 /// the ray (the local cast's gap, and rounding at the scale of the ray's
 /// origin, the reference point, the shape's size and the distance) over the
@@ -1022,8 +1078,9 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
     let across = gap + R::from_u32(8) * eps * (origin.l1() + reference.l1() + size + t);
     let cap = t + R::TWO * size + gap;
     let cos = cos - R::TWO * eps;
-    let bound = if cos * cap > across { across / cos + R::from_u32(4) * eps * t } else { cap };
-    if bound < cap {
+    // The reciprocal waits only for the normal, not for the distance too.
+    let bound = across * (R::ONE / cos) + R::from_u32(4) * eps * t;
+    if (cos > R::ZERO) & (bound < cap) {
         bound
     } else {
         cap

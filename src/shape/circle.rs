@@ -97,6 +97,9 @@ impl<R: Real> SupportMap<R> for Circle<R> {
     fn reference_point(&self) -> R::Vector {
         self.center.to_glam()
     }
+    fn disk_radius(&self) -> Option<R> {
+        Some(self.radius)
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_disk(V2::zero(), self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }

@@ -172,6 +172,15 @@ pub trait SupportMap<R: Real> {
         None
     }
 
+    /// The radius of a disk centered on [`center`](Self::center), whose
+    /// rays are cast in closed form straight into the world frame, with the
+    /// same arithmetic on every target and through `dyn SupportMap` alike.
+    /// `None` (the default) for every other shape.
+    #[doc(hidden)]
+    fn disk_radius(&self) -> Option<R> {
+        None
+    }
+
     /// The vertices of a polygon core of at most [`SMALL_POLYGON_MAX`],
     /// which the intersection test and the default penetration solver of
     /// two such polygons answer by their separating axes, with no iteration.
@@ -254,6 +263,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         (**self).cast_local_ray(o, d, max)
+    }
+    fn disk_radius(&self) -> Option<R> {
+        (**self).disk_radius()
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn small_polygon(&self) -> Option<SmallPolygon<'_, R>> {
