@@ -1,7 +1,8 @@
 //! The ray, and GJK ray casting (conservative advancement, van den Bergen
 //! 2004) for every support map without a closed form. Shapes with one cast
-//! their own (`shape/`): circles, capsules and segments beside their support,
-//! polygons and rectangles through the clip in `polytope/`.
+//! their own: capsules and segments beside their support (`shape/`),
+//! polygons and rectangles through the clip in `polytope/`, circles in the
+//! detector, placed, so one arithmetic serves every target.
 
 use crate::error::Error;
 use crate::minkowski::NO_ID;
