@@ -18,7 +18,7 @@ use crate::quad_start::QuadStart;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
 use crate::result::{Detection, FeatureId, Manifold, Penetration, RayCast, RayHit, RayOutcome, Separation, Status};
-use crate::shape::SupportMap;
+use crate::shape::{DiskRay, SupportMap};
 use crate::simplex::{Payload, Simplex, Witness};
 use crate::transform::Transform;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -1020,45 +1020,27 @@ struct Disk<R: Real> {
 }
 
 impl<R: Real> Disk<R> {
-    /// A ray against the disk, the arithmetic of [`crate::shape::cast_ray_disk`]
-    /// on the ray's local origin and direction, its normal taken from the
-    /// ray's world direction (rotating `d` and `d⊥` rotates the normal with
-    /// them). On hosts every number is taken and the outcome picked by
-    /// selects: which of inside, miss and hit a ray of a scene gives is a
-    /// coin toss a predictor would miss. Bare metal, with no predictor,
-    /// leaves as soon as it knows.
+    /// A ray against the disk ([`DiskRay`]) on the ray's local origin and
+    /// direction, its normal from the ray's world direction, so it needs no
+    /// rotation back. On hosts the outcome is picked by selects: which of
+    /// inside, miss and hit a ray of a scene gives is a coin toss a
+    /// predictor would miss.
     #[inline(always)]
     fn cast_placed(&self, ray: &Ray<R>, max: R, origin: V2<R>, d: V2<R>, reference: V2<R>) -> RayCast<R> {
-        let bare_metal = cfg!(target_os = "none");
-        let (r, m) = (self.radius, origin - self.center);
-        let c = m.length_squared() - r * r;
-        let inside = c <= R::ZERO;
-        if bare_metal && inside {
-            return RayCast::closed_form(RayOutcome::Inside);
-        }
-        let b = m.dot(d);
-        let across = d.cross(m);
-        let p = across.abs();
-        let misses = (b >= R::ZERO) | (p > r);
-        if bare_metal && misses {
-            return RayCast::closed_form(RayOutcome::Miss);
-        }
-        // Past the radius (a miss, picked later on hosts) the chord is
-        // taken as zero: `t` is then anything but NaN, and unused.
-        let chord_squared = (r - p) * (r + p);
-        let half_chord = if bare_metal { chord_squared } else { chord_squared.max(R::ZERO) }.sqrt();
-        let t = c / (-b + half_chord);
-        let inverse_radius = R::ONE / r;
-        let normal = (ray.direction * -half_chord + ray.direction.perp() * across) * inverse_radius;
+        let local = match DiskRay::new(self.center, self.radius, origin, d) {
+            Ok(local) => local,
+            Err(outcome) => return RayCast::closed_form(outcome),
+        };
+        let (t, inverse_radius) = (local.t, R::ONE / self.radius);
         let hit = RayHit {
             distance: t,
             point: (ray.origin + ray.direction * t).to_glam(),
-            normal: normal.to_glam(),
-            error_bound: hit_error_bound(R::ZERO, t, half_chord * inverse_radius, origin, reference, self.size),
+            normal: local.normal(ray.direction, inverse_radius).to_glam(),
+            error_bound: hit_error_bound(R::ZERO, t, local.half_chord * inverse_radius, origin, reference, self.size),
         };
         // A finite hit within the limit, never inf or NaN.
-        let hits = !inside & !misses & (t < R::INFINITY) & (t <= max);
-        let missed = core::hint::select_unpredictable(inside, RayOutcome::Inside, RayOutcome::Miss);
+        let hits = !local.inside & !local.misses & (t < R::INFINITY) & (t <= max);
+        let missed = core::hint::select_unpredictable(local.inside, RayOutcome::Inside, RayOutcome::Miss);
         RayCast::closed_form(core::hint::select_unpredictable(hits, RayOutcome::Hit(hit), missed))
     }
 }

@@ -105,40 +105,74 @@ impl<R: Real> SupportMap<R> for Circle<R> {
     }
 }
 
-/// Ray against a disk. The root is taken in the form without cancellation,
-/// `t = c / (-b + sqrt(disc))`, and the discriminant from the perpendicular
-/// offset `r^2 - p^2 = (r - p)(r + p)`, so grazing rays keep their precision.
+/// Ray against a disk, in the disk's frame.
 #[cfg_attr(not(target_os = "none"), inline)]
 pub(crate) fn cast_ray_disk<R: Real>(center: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
-    let m = o - center;
-    // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
-    // too), without a square root.
-    let c = m.length_squared() - r * r;
-    if c <= R::ZERO {
-        return RayCast::closed_form(RayOutcome::Inside);
-    }
-    let b = m.dot(d);
-    // The offset's component across the ray: m = b d + across d⊥.
-    let across = d.cross(m);
-    let p = across.abs();
+    let ray = match DiskRay::new(center, r, o, d) {
+        Ok(ray) => ray,
+        Err(outcome) => return RayCast::closed_form(outcome),
+    };
     // On hosts one branch for every way to miss, not two: which test a miss
-    // fails is not predictable (past the radius the chord is then taken as
-    // zero, a value never used). Bare metal, with no predictor to miss,
-    // leaves as soon as it knows.
-    let outside = (b >= R::ZERO) | (p > r);
-    if cfg!(target_os = "none") && outside {
-        return RayCast::closed_form(RayOutcome::Miss);
+    // fails is not predictable.
+    RayCast::closed_form(if ray.inside {
+        RayOutcome::Inside
+    } else if ray.misses | (ray.t > max) {
+        RayOutcome::Miss
+    } else {
+        hit(o, d, ray.t, ray.normal(d, R::ONE / r))
+    })
+}
+
+/// The numbers of a ray against a disk. The root is taken in the form
+/// without cancellation, `t = c / (-b + sqrt(disc))`, and the discriminant
+/// from the perpendicular offset `r^2 - p^2 = (r - p)(r + p)`, so grazing
+/// rays keep their precision.
+pub(crate) struct DiskRay<R: Real> {
+    /// The origin is inside the disk or on its circle.
+    pub inside: bool,
+    /// The ray points away from the disk or passes it by.
+    pub misses: bool,
+    pub t: R,
+    pub half_chord: R,
+    /// The offset from the center across the ray: `m = b d + across d⊥`.
+    across: R,
+}
+
+impl<R: Real> DiskRay<R> {
+    /// Bare metal, with no predictor to miss, leaves with the outcome as
+    /// soon as it knows. Hosts take every number, so that a caller picks
+    /// the outcome by selects or one branch: past the radius the chord is
+    /// taken as zero and `t` is then anything but NaN, and unused.
+    #[inline(always)]
+    pub fn new(center: V2<R>, r: R, o: V2<R>, d: V2<R>) -> Result<Self, RayOutcome<R>> {
+        let bare_metal = cfg!(target_os = "none");
+        let m = o - center;
+        // |m|^2 - r^2: rounds like (|m| - r)(|m| + r) would (|m| is rounded
+        // too), without a square root.
+        let c = m.length_squared() - r * r;
+        let inside = c <= R::ZERO;
+        if bare_metal && inside {
+            return Err(RayOutcome::Inside);
+        }
+        let b = m.dot(d);
+        let across = d.cross(m);
+        let p = across.abs();
+        let misses = (b >= R::ZERO) | (p > r);
+        if bare_metal && misses {
+            return Err(RayOutcome::Miss);
+        }
+        let chord_squared = (r - p) * (r + p);
+        let half_chord = if bare_metal { chord_squared } else { chord_squared.max(R::ZERO) }.sqrt();
+        Ok(Self { inside, misses, t: c / (-b + half_chord), half_chord, across })
     }
-    let chord_squared = (r - p) * (r + p);
-    let chord_squared = if cfg!(target_os = "none") { chord_squared } else { chord_squared.max(R::ZERO) };
-    let half_chord = chord_squared.sqrt();
-    let t = c / (-b + half_chord);
-    if outside | (t > max) {
-        return RayCast::closed_form(RayOutcome::Miss);
+
+    /// The unit normal at the hit, from the ray's direction `d` in the
+    /// frame wanted (rotating `d` and `d⊥` rotates the normal with them).
+    /// The hit point from the center is `m + t d = -half_chord d + across d⊥`
+    /// (`b + t = -half_chord`): of length r to rounding, with no
+    /// cancellation however far the origin, and no second square root.
+    #[inline(always)]
+    pub fn normal(&self, d: V2<R>, inverse_radius: R) -> V2<R> {
+        (d * -self.half_chord + d.perp() * self.across) * inverse_radius
     }
-    // The hit point from the center is m + t d = -half_chord d + across d⊥
-    // (b + t = -half_chord): of length r to rounding, with no cancellation
-    // however far the origin, and no second square root on the way.
-    let normal = (d * -half_chord + d.perp() * across) * (R::ONE / r);
-    RayCast::closed_form(hit(o, d, t, normal))
 }

@@ -38,8 +38,8 @@ mod triangle;
 
 pub(crate) use capsule::cast_ray_capsule;
 pub use capsule::Capsule;
-pub(crate) use circle::cast_ray_disk;
 pub use circle::Circle;
+pub(crate) use circle::{cast_ray_disk, DiskRay};
 pub use ellipse::Ellipse;
 pub use half_ellipse::HalfEllipse;
 pub use polygon::Polygon;
