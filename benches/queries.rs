@@ -10,6 +10,7 @@
 //! cargo bench --bench queries -- toi          # time of impact with rotation against cast_shapes_nonlinear
 //! GJK2D_BENCH_PASSES=31 cargo bench --bench queries
 //! cargo bench --bench queries -- warm        # warm-started queries against cold, step by step
+//! cargo bench --bench queries -- warm penetration   # one warm-started query only
 //! ```
 //!
 //! The four contenders (gjk2d and parry2d, f32 and f64) take turns within every
@@ -490,7 +491,7 @@ fn warm_pass<R: Real>(warm: &mut [Warm<R>], q: Query, cached: bool) -> (u64, u64
 /// pair once (as every family: too many for the branch predictor to learn). Rows: ns per query (median over
 /// steps), cached / cold (median of per-step ratios), and the mean
 /// iterations of each (an answer of `None` counts none).
-fn warm_family(name: &str, passes: usize) {
+fn warm_family(name: &str, passes: usize, words: &[String]) {
     println!("\n{name}: {CASES} pairs of 8-gons, each shape moved by at most 1% of its size and turned by at most 1 degree a step, {passes} steps after one untimed");
     println!("| query | cold f32 ns | cached f32 ns | cached/cold f32 | iterations cold/cached f32 | cold f64 ns | cached f64 ns | cached/cold f64 | iterations cold/cached f64 |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
@@ -500,7 +501,13 @@ fn warm_family(name: &str, passes: usize) {
         (Query::Penetration, "penetration"),
         (Query::Manifold, "manifold"),
     ];
+    // A word that names a query keeps the rows to the queries named.
+    let named = |qn: &str| words.iter().any(|w| w == qn);
+    let some_named = queries.iter().any(|&(_, qn)| named(qn));
     for (q, qn) in queries {
+        if some_named && !named(qn) {
+            continue;
+        }
         let (mut pairs, mut rng) = moving_pairs(21, CASES);
         let (mut w32, mut w64) = (warm_pairs::<f32>(&pairs), warm_pairs::<f64>(&pairs));
         // Per contender (cold f32, cached f32, cold f64, cached f64): times and iterations.
@@ -782,7 +789,7 @@ fn main() {
         toi_family::<8>("toi_poly8_capsule", &tois(16, CASES, &p8, &capsule), passes, &mut rows);
     }
     if wanted("warm_poly8") {
-        warm_family("warm_poly8", passes);
+        warm_family("warm_poly8", passes, &words);
     }
     let slower: Vec<String> = rows
         .iter()
