@@ -80,7 +80,7 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     }
     let normal = (next[entry] - v[entry]).perp_cw().try_normalize().unwrap_or(-d);
     let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, latest_exit);
-    RayCast::closed_form(edge_hit(o, d, t, exit, (v[entry], next[entry]), normal, gap))
+    RayCast::closed_form(edge_hit(&v[..n], entry, (o, d), (t, exit), normal, gap, rounding))
 }
 
 /// The lane of the latest entry: the one a scan from lane 0 keeps, taking
@@ -101,26 +101,48 @@ fn latest_entry<R: Real>(lower: &[R; SMALL_POLYGON_MAX]) -> usize {
     super::first_max(&ranked)
 }
 
-/// An edge by its two ends, counter-clockwise.
-type Edge<R> = (V2<R>, V2<R>);
-
-/// The hit at `t` through `edge`, or at the edge's nearer end where
-/// rounding put the ray's point past one: a ray along a neighbouring face,
-/// outside it by less than rounding, crosses this edge's line beyond the
-/// vertex they share, by the miss over the sine of their angle, which is
-/// far off the polygon for a sliver. The end's own distance along the ray
-/// is then the hit's, so its point lies on the boundary within the miss.
+/// The hit at `t` through edge `i` (from vertex `i` to the next), or at an
+/// end of the edge where rounding put the ray's point past one: a ray
+/// along a neighbouring face, outside it by less than rounding, crosses
+/// this edge's line beyond the vertex they share, by the miss over the sine
+/// of their angle, which is far off the polygon for a sliver. The end's own
+/// distance along the ray is then the hit's, so its point lies on the
+/// boundary within the miss. Where the next edge that way goes on along the
+/// line through the point (a vertex on an edge: the clip may enter a run of
+/// collinear edges by any of them), the point is on the boundary already,
+/// and the walk goes on to that edge.
 #[inline(always)]
-fn edge_hit<R: Real>(o: V2<R>, d: V2<R>, t: R, exit: R, edge: Edge<R>, normal: V2<R>, gap: R) -> RayOutcome<R> {
-    let (a, b) = edge;
-    let along = (o + d * t - a).dot(b - a);
-    let end = if along < R::ZERO {
-        Some(a)
-    } else if along > (b - a).dot(b - a) {
-        Some(b)
-    } else {
-        None
-    };
+fn edge_hit<R: Real>(
+    vertices: &[V2<R>],
+    i: usize,
+    (o, d): (V2<R>, V2<R>),
+    (t, exit): (R, R),
+    normal: V2<R>,
+    gap: R,
+    rounding: FaceRounding<R>,
+) -> RayOutcome<R> {
+    let n = vertices.len();
+    let p = o + d * t;
+    let mut k = i;
+    let mut end = None;
+    // Each step moves one edge along a run of them on one line: at most n.
+    for _ in 0..n {
+        let (a, b) = (at(vertices, k), at(vertices, wrap(k + 1, n)));
+        let along = (p - a).dot(b - a);
+        let (vertex, beyond, step) = if along < R::ZERO {
+            (a, at(vertices, wrap(k + n - 1, n)), n - 1)
+        } else if along > (b - a).dot(b - a) {
+            (b, at(vertices, wrap(k + 2, n)), 1)
+        } else {
+            end = None;
+            break;
+        };
+        end = Some(vertex);
+        if !rounding.goes_on(vertex, beyond, p, t) {
+            break;
+        }
+        k = wrap(k + step, n);
+    }
     let t = end.map_or(t, |end| (end - o).dot(d).max(R::ZERO).min(exit));
     gap_hit(o, d, t, normal, gap)
 }
@@ -135,12 +157,12 @@ pub(crate) fn cast_ray_polygon<R: Real>(
     rounding: FaceRounding<R>,
 ) -> RayCast<R> {
     let mut clip = Clip::new(o, d, max, rounding);
-    for (&a, &b) in vertices.iter().zip(vertices.iter().skip(1).chain(vertices.first())) {
-        if clip.misses(a, b) {
+    for (k, (&a, &b)) in vertices.iter().zip(vertices.iter().skip(1).chain(vertices.first())).enumerate() {
+        if clip.misses(k, a, b) {
             return RayCast::closed_form(RayOutcome::Miss);
         }
     }
-    clip.outcome()
+    clip.outcome(vertices)
 }
 
 /// The ray's line meets a convex polygon's boundary on two edges: one on
@@ -196,7 +218,7 @@ pub(crate) fn cast_ray_many_sided<R: Real, const N: usize>(
             return Some(RayCast::closed_form(RayOutcome::Miss));
         }
     }
-    Some(clip.outcome())
+    Some(clip.outcome(v))
 }
 
 /// On the chain counter-clockwise from vertex `from` to vertex `to` (where
@@ -264,6 +286,16 @@ impl<R: Real> FaceRounding<R> {
         (numerator - self.across * length, denominator + R::from_u32(8) * R::EPSILON * length)
     }
 
+    /// Whether the boundary goes on from `vertex` towards `beyond` through
+    /// the ray's point `p` (at `t` along it): `p` lies that way from the
+    /// vertex, on the edge's line to within what rounding may move a face.
+    #[inline(always)]
+    fn goes_on(&self, vertex: V2<R>, beyond: V2<R>, p: V2<R>, t: R) -> bool {
+        let (e, q) = (beyond - vertex, p - vertex);
+        let reach = self.across + R::from_u32(8) * R::EPSILON * t.abs();
+        e.dot(q) > R::ZERO && e.cross(q).abs() <= reach * e.l1()
+    }
+
     /// The gap to report across the face of a hit at `t` whose unit normal
     /// meets the ray at `n_dot_d`: how much later than `t` an exact ray may
     /// enter. Where the faces moved in are entered, no later than they are;
@@ -322,8 +354,9 @@ struct Clip<R: Real> {
     o: V2<R>,
     d: V2<R>,
     span: Span<R>,
-    /// The edge the ray last entered through, and its normal.
-    entered: Option<(Edge<R>, V2<R>)>,
+    /// The edge the ray last entered through (by its first vertex), and
+    /// its normal.
+    entered: Option<(usize, V2<R>)>,
     rounding: FaceRounding<R>,
     inner: Span<R>,
     inner_empty: bool,
@@ -338,10 +371,10 @@ impl<R: Real> Clip<R> {
         Self { o, d, span, entered: None, rounding, inner: span, inner_empty: false, outer_exit: max }
     }
 
-    /// Clips by the inner side of edge `a`-`b`; true when the ray
-    /// certainly misses.
+    /// Clips by the inner side of edge `k`, from `a` to `b`; true when the
+    /// ray certainly misses.
     #[inline(always)]
-    fn misses(&mut self, a: V2<R>, b: V2<R>) -> bool {
+    fn misses(&mut self, k: usize, a: V2<R>, b: V2<R>) -> bool {
         let normal = (b - a).perp_cw();
         // Positive when the origin is on the inner side of this edge.
         let numerator = normal.dot(a - self.o);
@@ -354,7 +387,7 @@ impl<R: Real> Clip<R> {
         }
         let (empty, raised) = self.span.clip(numerator, denominator);
         if raised {
-            self.entered = Some(((a, b), normal));
+            self.entered = Some((k, normal));
         }
         empty
     }
@@ -385,7 +418,7 @@ impl<R: Real> Clip<R> {
         let mut k = first;
         while k != last && steps < 2 * n {
             let next = wrap(k + 1, n);
-            if self.misses(at(v, k), at(v, next)) {
+            if self.misses(k, at(v, k), at(v, next)) {
                 return true;
             }
             k = next;
@@ -394,14 +427,16 @@ impl<R: Real> Clip<R> {
         false
     }
 
-    fn outcome(self) -> RayCast<R> {
+    /// The hit, or inside, of the ray clipped by every edge that decides it
+    /// among `vertices`.
+    fn outcome(self, vertices: &[V2<R>]) -> RayCast<R> {
         RayCast::closed_form(match self.entered {
             None => RayOutcome::Inside,
             Some((edge, normal)) => {
                 let normal = normal.try_normalize().unwrap_or(-self.d);
                 let t = self.span.lower;
                 let gap = self.rounding.gap(t, normal.dot(self.d), self.inner, self.inner_empty, self.outer_exit);
-                edge_hit(self.o, self.d, t, self.span.upper, edge, normal, gap)
+                edge_hit(vertices, edge, (self.o, self.d), (t, self.span.upper), normal, gap, self.rounding)
             }
         })
     }
