@@ -82,8 +82,12 @@ fn random_shape(rng: &mut Rng, kind: u32, c: Pt, size: f64) -> Option<Geo> {
 /// other cases, `GJK2D_LONG=<n>` runs n times as many.
 fn config(seed: u64) -> ProptestConfig {
     let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(seed);
+    let cases = cases(200);
+    // About a third of the parallel faces' draws are rejected: the cap
+    // grows with the cases, so a long run is not cut short by it.
     ProptestConfig {
-        cases: cases(200),
+        cases,
+        max_global_rejects: cases.max(1024),
         rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
         ..ProptestConfig::default()
     }
