@@ -11,9 +11,13 @@
 //! offsets, so the polygon is stored exactly. Rays cross the run at its
 //! last vertex (1, -1) from directions between the run's line and the next
 //! edge's (that edge itself included: the ray then grazes along it), and
-//! at an inner vertex of the run: the exact distance is the origin's
-//! distance to that vertex, and the hit must lie within 8 eps L of it,
-//! inside the error bound it reports. In f32 and f64, for polygons of up
+//! at an inner vertex of the run, and along the run's line from either
+//! side (meeting the boundary at the run's first vertex, or at its last
+//! from outside): the exact distance is the origin's distance to that
+//! vertex, and the hit must lie within 8 eps L of it, inside the error
+//! bound it reports. (Rays along an edge's line in a direction that
+//! rounds, whose exact answers need the oracle, are among
+//! `tests/properties.rs`'s.) In f32 and f64, for polygons of up
 //! to eight vertices (clipped by every edge at once), many-sided ones
 //! (searched) and both through `dyn SupportMap` (scanned).
 
@@ -55,7 +59,13 @@ macro_rules! collinear_suite {
                         let small = (vertices.len() <= 8).then(|| Polygon::<R, 8>::new(&vertices).unwrap());
                         let large = Polygon::<R, 64>::new(&vertices).unwrap();
                         let inner = [-1.0 + 2.0 / pieces as f64, -1.0];
-                        let rays = AT_LAST.iter().map(|&u| ([1.0, -1.0], u)).chain(AT_INNER.iter().map(|&u| (inner, u)));
+                        // Along the run's line, into its first vertex and, from outside, its last.
+                        let along = [([-1.0, -1.0], [1.0, 0.0]), ([1.0, -1.0], [-1.0, 0.0])];
+                        let rays = AT_LAST
+                            .iter()
+                            .map(|&u| ([1.0, -1.0], u))
+                            .chain(AT_INNER.iter().map(|&u| (inner, u)))
+                            .chain(along);
                         for (crossing, u) in rays {
                             for back in [0.25, 1.0, 3.0] {
                                 let target = place(crossing);
@@ -89,7 +99,7 @@ macro_rules! collinear_suite {
                     }
                 }
             }
-            assert!(checked > 4000, "{checked}");
+            assert!(checked > 5000, "{checked}");
         }
     };
 }

@@ -110,7 +110,8 @@ fn latest_entry<R: Real>(lower: &[R; SMALL_POLYGON_MAX]) -> usize {
 /// boundary within the miss. Where the next edge that way goes on along the
 /// line through the point (a vertex on an edge: the clip may enter a run of
 /// collinear edges by any of them), the point is on the boundary already,
-/// and the walk goes on to that edge.
+/// and the walk goes on to that edge. A ray along the edge itself meets
+/// the boundary where [`along_edge`] says.
 #[inline(always)]
 fn edge_hit<R: Real>(
     vertices: &[V2<R>],
@@ -121,6 +122,9 @@ fn edge_hit<R: Real>(
     gap: R,
     rounding: FaceRounding<R>,
 ) -> RayOutcome<R> {
+    if let Some(first) = along_edge(vertices, i, (o, d), rounding.on_line()).filter(|&first| first < t) {
+        return gap_hit(o, d, first.max(R::ZERO).min(exit), normal, gap);
+    }
     let n = vertices.len();
     let p = o + d * t;
     let mut k = i;
@@ -145,6 +149,33 @@ fn edge_hit<R: Real>(
     }
     let t = end.map_or(t, |end| (end - o).dot(d).max(R::ZERO).min(exit));
     gap_hit(o, d, t, normal, gap)
+}
+
+/// Where a ray that runs along edge `i` (both its ends within `reach` of
+/// the ray's line, to rounding) first meets the boundary, along the ray: at the end it
+/// reaches first, or at the first vertex of a run of them along the line
+/// before that end. The clip's crossing of such an edge's line is rounding
+/// alone, anywhere along the edge or past it. `None` for any other edge.
+#[inline(always)]
+fn along_edge<R: Real>(vertices: &[V2<R>], i: usize, (o, d): (V2<R>, V2<R>), reach: R) -> Option<R> {
+    let n = vertices.len();
+    let near = |q: V2<R>| d.cross(q - o).abs() <= reach;
+    let (a, b) = (at(vertices, i), at(vertices, wrap(i + 1, n)));
+    if !(near(a) && near(b)) {
+        return None;
+    }
+    // Back along the ray, round the ring the other way from the edge's
+    // direction of travel.
+    let (mut first, step) = if (b - a).dot(d) > R::ZERO { (i, n - 1) } else { (wrap(i + 1, n), 1) };
+    for _ in 0..n {
+        let before = wrap(first + step, n);
+        let (p, q) = (at(vertices, first), at(vertices, before));
+        if !near(q) || (q - p).dot(d) >= R::ZERO {
+            break;
+        }
+        first = before;
+    }
+    Some((at(vertices, first) - o).dot(d))
 }
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
@@ -292,8 +323,21 @@ impl<R: Real> FaceRounding<R> {
     #[inline(always)]
     fn goes_on(&self, vertex: V2<R>, beyond: V2<R>, p: V2<R>, t: R) -> bool {
         let (e, q) = (beyond - vertex, p - vertex);
-        let reach = self.across + R::from_u32(8) * R::EPSILON * t.abs();
-        e.dot(q) > R::ZERO && e.cross(q).abs() <= reach * e.l1()
+        e.dot(q) > R::ZERO && e.cross(q).abs() <= self.reach(t) * e.l1()
+    }
+
+    /// How far from the ray's line a vertex may be and count as on it: the
+    /// rounding of one coordinate, not a face's (which adds up several),
+    /// so a hit moved to the vertex stays on the boundary to rounding.
+    #[inline(always)]
+    fn on_line(&self) -> R {
+        self.across / R::from_u32(8)
+    }
+
+    /// How far rounding may move a face across the ray `t` along it.
+    #[inline(always)]
+    fn reach(&self, t: R) -> R {
+        self.across + R::from_u32(8) * R::EPSILON * t.abs()
     }
 
     /// The gap to report across the face of a hit at `t` whose unit normal
