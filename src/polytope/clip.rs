@@ -152,10 +152,10 @@ fn edge_hit<R: Real>(
 }
 
 /// Where a ray that runs along edge `i` (both its ends within `reach` of
-/// the ray's line, to rounding) first meets the boundary, along the ray: at the end it
-/// reaches first, or at the first vertex of a run of them along the line
-/// before that end. The clip's crossing of such an edge's line is rounding
-/// alone, anywhere along the edge or past it. `None` for any other edge.
+/// the ray's line) first meets the boundary: at the end it reaches first,
+/// or at the first vertex of a run of them along the line before that end.
+/// The clip's crossing of such an edge's line is rounding alone, anywhere
+/// along the edge or past it. `None` for any other edge.
 #[inline(always)]
 fn along_edge<R: Real>(vertices: &[V2<R>], i: usize, (o, d): (V2<R>, V2<R>), reach: R) -> Option<R> {
     let n = vertices.len();
