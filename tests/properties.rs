@@ -209,12 +209,16 @@ fn gcd(a: i64, b: i64) -> i64 {
 }
 
 /// A fixed seed so CI is reproducible; `PROPTEST_RNG_SEED=<u64>` explores
-/// other cases (failures are saved to the regressions file and replayed).
+/// other cases (failures are saved to the regressions file and replayed),
+/// `PROPTEST_CASES=<n>` runs n of each.
 fn config() -> ProptestConfig {
     let seed = std::env::var("PROPTEST_RNG_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x6a6b_3264);
+    // A long run (`PROPTEST_CASES=<n>`) gets a reject cap to match: about
+    // one many-sided polygon in four is rejected.
+    let cases = std::env::var("PROPTEST_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(256);
     ProptestConfig {
-        cases: 256,
-        max_global_rejects: 4096,
+        cases,
+        max_global_rejects: cases.max(4096),
         rng_seed: proptest::test_runner::RngSeed::Fixed(seed),
         ..ProptestConfig::default()
     }
