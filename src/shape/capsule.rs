@@ -114,33 +114,43 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
 /// that end's disk: one disk cast, not a comparison of three hits. A bare
 /// segment has its own cast (in `segment.rs`), so a firmware with capsules
 /// links no segment cast.
+///
+/// Heights and positions along the core are kept scaled by its length `l`
+/// (dot and cross products with `delta`): the tests compare them with `r l`
+/// and `l^2`, so no division waits before the hit's own, and the unit
+/// normal's `1 / l` is taken beside it.
 pub(crate) fn cast_ray_capsule<R: Real>(a: V2<R>, delta: V2<R>, r: R, o: V2<R>, d: V2<R>, max: R) -> RayCast<R> {
     let len2 = delta.length_squared();
     let rel = o - a;
-    // Closest point of the core to the ray origin decides "inside".
-    let t_axis = (rel.dot(delta) / len2).max(R::ZERO).min(R::ONE);
-    if (rel - delta * t_axis).length() <= r {
+    let normal_dir = delta.perp();
+    // Height over the core's line, and how far along it, both times `l`.
+    let h = normal_dir.dot(rel);
+    let mut along = delta.dot(rel);
+    let length = len2.sqrt();
+    let reach = r * length;
+    // The closest point of the core to the ray origin decides "inside":
+    // an end beyond the core's ends, else the foot on its line (not `h`
+    // squared: at the largest coordinates that overflows). All three
+    // measured and one picked by selects: where along the core a ray
+    // starts is a coin toss.
+    let (near_a, near_b) = (rel.length_squared() <= r * r, (rel - delta).length_squared() <= r * r);
+    let beside = core::hint::select_unpredictable(along >= len2, near_b, h.abs() <= reach);
+    let inside = core::hint::select_unpredictable(along <= R::ZERO, near_a, beside);
+    if inside {
         return RayCast::closed_form(RayOutcome::Inside);
     }
-    let length = len2.sqrt();
-    let axis = delta * (R::ONE / length);
-    let side = axis.perp();
-    // Height over the core's line, and where along the axis the ray is when
-    // it is in the band (its origin, if it starts there).
-    let h = side.dot(rel);
-    let mut along = axis.dot(rel);
-    if h.abs() > r {
+    if h.abs() > reach {
         // Outside the band: it comes in through the nearer side line or not
         // at all.
         let toward = if h >= R::ZERO { R::ONE } else { -R::ONE };
-        let dn = side.dot(d);
+        let dn = normal_dir.dot(d);
         if toward * dn >= R::ZERO {
             return RayCast::closed_form(RayOutcome::Miss);
         }
-        let t = (h.abs() - r) / dn.abs();
-        along = axis.dot(rel + d * t);
-        if along >= R::ZERO && along <= length {
-            let outcome = if t <= max { hit(o, d, t, side * toward) } else { RayOutcome::Miss };
+        let t = (h.abs() - reach) / dn.abs();
+        along = delta.dot(rel + d * t);
+        if along >= R::ZERO && along <= len2 {
+            let outcome = if t <= max { hit(o, d, t, normal_dir * (toward / length)) } else { RayOutcome::Miss };
             return RayCast::closed_form(outcome);
         }
     }
