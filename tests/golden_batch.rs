@@ -218,6 +218,7 @@ pub fn golden_batch<R: gjk2d::Real>(h: &mut GoldenHasher, seed: u64) {
                 h.real(hit.distance);
                 h.vector::<R>(hit.point);
                 h.vector::<R>(hit.normal);
+                h.real(hit.error_bound);
             }
             gjk2d::RayOutcome::Miss => h.word(0x4a7_0002),
             gjk2d::RayOutcome::Inside => h.word(0x4a7_0003),
