@@ -18,10 +18,13 @@ enum Expect {
     Hit(f64, (f64, f64)),
 }
 
+/// A ray in units of `s`: origin, direction, maximum length (0: unbounded),
+/// and the exact answer.
+type Case = ((f64, f64), (f64, f64), f64, Expect);
+
 /// Rays in a capsule's frame, along x from `(-s/2, 0)` to `(s/2, 0)` with
-/// radius `5 s / 64`, in units of `s`: origin, direction, maximum length
-/// (0: unbounded), and the exact answer.
-fn cases() -> Vec<((f64, f64), (f64, f64), f64, Expect)> {
+/// radius `5 s / 64`.
+fn cases() -> Vec<Case> {
     let r = 5.0 / 64.0;
     vec![
         // Inside: over the core, in a cap, on the side line.
