@@ -250,5 +250,5 @@ pub(crate) fn machine() -> String {
         })
         .unwrap_or_else(|| "unknown CPU".into());
     let n = std::thread::available_parallelism().map_or(1, |n| n.get());
-    format!("{model}, {n} cores")
+    format!("{model}, {n} core{}", if n == 1 { "" } else { "s" })
 }
