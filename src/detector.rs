@@ -748,36 +748,50 @@ impl<R: Real, P> Gjk<R, P> {
             let disk = Disk { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() };
             return disk.cast_placed(ray, max, origin, direction, rounded_reference);
         }
-        let local =
-            if self.closed_form_rays { cast_local_ray(shape, origin, direction, max, rounded_reference) } else { None };
-        let local = local.unwrap_or_else(|| {
-            cast_ray_gjk(
-                shape,
-                origin,
-                direction,
-                max,
-                self.config.max_raycast_iterations(),
-                self.config.raycast_epsilon(),
-            )
-        });
+        // A polygon's cast in face form, every other shape's in the form of
+        // `cast_local_ray` (or by GJK).
+        let face = self.closed_form_rays && shape.casts_face_rays();
+        let local = if face {
+            cast_face_ray(shape, origin, direction, max, rounded_reference)
+                .unwrap_or(RayCast::closed_form(RayOutcome::Miss))
+        } else {
+            let local = if self.closed_form_rays {
+                shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
+            } else {
+                None
+            };
+            local.unwrap_or_else(|| {
+                cast_ray_gjk(
+                    shape,
+                    origin,
+                    direction,
+                    max,
+                    self.config.max_raycast_iterations(),
+                    self.config.raycast_epsilon(),
+                )
+            })
+        };
+        let size = shape.bounding_radius();
         let outcome = match local.outcome {
             // A closed form of a user's shape could report a hit at infinity
             // (a ray parallel to rounding); no finite hit is a miss.
             RayOutcome::Hit(h) if !(h.distance.is_finite() && h.distance <= max) => RayOutcome::Miss,
-            RayOutcome::Hit(h) => RayOutcome::Hit(RayHit {
-                distance: h.distance,
-                // From the world ray, not the local point: one rounding less.
-                point: (ray.origin + ray.direction * h.distance).to_glam(),
-                normal: transform.rotate(V2::from_glam(h.normal)).to_glam(),
-                error_bound: hit_error_bound(
-                    h.error_bound,
-                    h.distance,
-                    V2::from_glam(h.normal).dot(direction).abs(),
-                    origin,
-                    rounded_reference,
-                    shape.bounding_radius(),
-                ),
-            }),
+            RayOutcome::Hit(h) => {
+                let (normal, error_bound) = if face {
+                    face_hit_world(V2::from_glam(h.normal), direction, &h, origin, rounded_reference, size)
+                } else {
+                    let normal = V2::from_glam(h.normal);
+                    let cos = normal.dot(direction).abs();
+                    (normal, hit_error_bound(h.error_bound, h.distance, cos, origin, rounded_reference, size))
+                };
+                RayOutcome::Hit(RayHit {
+                    distance: h.distance,
+                    // From the world ray, not the local point: one rounding less.
+                    point: (ray.origin + ray.direction * h.distance).to_glam(),
+                    normal: transform.rotate(normal).to_glam(),
+                    error_bound,
+                })
+            }
             other => other,
         };
         RayCast { outcome, ..local }
@@ -987,12 +1001,13 @@ fn in_own_frame<T>(f: impl FnOnce() -> T) -> T {
     f()
 }
 
-/// The shape's closed-form ray cast, in its local frame. A small polygon of
-/// a type known when the program is compiled is clipped by every edge at
-/// once on hosts (never through `dyn SupportMap`, so every target shares
-/// the golden batch's path).
+/// A polygon's closed-form ray cast in its local frame, in face form
+/// ([`SupportMap::cast_local_face_ray`]). A small polygon of a type known
+/// when the program is compiled is clipped by every edge at once on hosts
+/// (never through `dyn SupportMap`, so every target shares the golden
+/// batch's path).
 #[inline(always)]
-fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
+fn cast_face_ray<R: Real, S: SupportMap<R> + ?Sized>(
     shape: &S,
     origin: V2<R>,
     direction: V2<R>,
@@ -1008,7 +1023,7 @@ fn cast_local_ray<R: Real, S: SupportMap<R> + ?Sized>(
     }
     #[cfg(any(target_os = "none", target_family = "wasm"))]
     let _ = rounded_reference;
-    shape.cast_local_ray(origin.to_glam(), direction.to_glam(), max)
+    shape.cast_local_face_ray(origin.to_glam(), direction.to_glam(), max)
 }
 
 /// A disk in the shape's frame: its center relative to the reference
@@ -1052,8 +1067,9 @@ impl<R: Real> Disk<R> {
 /// towards the tangent moves its hit that much more (on a curve, at most
 /// `sqrt(2 r e)`, which `e / cos` covers with the computed `cos`). At most
 /// the distance plus the shape's diameter, so never inf or NaN. One
-/// formula for every shape but the disk ([`disk_error_bound`]), out of line
-/// on bare metal so that one copy serves every other shape's cast.
+/// formula for every shape but the disk and the polygons
+/// ([`disk_error_bound`], [`face_hit_world`]), out of line on bare metal so
+/// that one copy serves every other shape's cast.
 #[cfg_attr(target_os = "none", inline(never))]
 fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R>, size: R) -> R {
     let eps = R::EPSILON;
@@ -1067,6 +1083,28 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
     } else {
         cap
     }
+}
+
+/// [`hit_error_bound`] of a hit in face form
+/// ([`SupportMap::cast_local_face_ray`]), and its unit normal. With `m`
+/// the face's normal and `c = |m . d|`, the incidence is `c / |m|`: the
+/// gap and the rounding over it less its own rounding are one quotient by
+/// `c - 2 eps |m|`, which waits only for the square root, as the unit
+/// normal does. A face too small to have a normal gets the ray's reverse,
+/// as the local cast's does.
+#[inline(always)]
+fn face_hit_world<R: Real>(m: V2<R>, d: V2<R>, h: &RayHit<R>, origin: V2<R>, reference: V2<R>, size: R) -> (V2<R>, R) {
+    let ((length, unit), m) = match m.try_length_and_unit() {
+        Some(normal) => (normal, m),
+        None => ((R::ONE, -d), -d),
+    };
+    let (eps, t, late) = (R::EPSILON, h.distance, h.error_bound);
+    let c = m.dot(d).abs();
+    let across = late * c + R::from_u32(8) * eps * (origin.l1() + reference.l1() + size + t) * length;
+    let cap = t + R::TWO * size + late;
+    let edge = c - R::TWO * eps * length;
+    let bound = across / edge + R::from_u32(4) * eps * t;
+    (unit, core::hint::select_unpredictable((edge > R::ZERO) & (bound < cap), bound, cap))
 }
 
 /// [`hit_error_bound`] of a disk's hit, whose incidence is the half chord

@@ -9,7 +9,8 @@
 //! grazing hits aside), its normal the unit outward normal of a face
 //! through the hit point, and `Inside` only for an origin within the bound
 //! of the polygon. The same rays through `dyn SupportMap` (the clip every
-//! target takes) must agree with it.
+//! target takes) must agree with it, and so must the polygon's own
+//! `cast_local_ray`.
 
 #[path = "common/geo.rs"]
 mod geo;
@@ -151,6 +152,27 @@ macro_rules! ray_suite {
                         let behind = reach - (nrm[0] * p[0] + nrm[1] * p[1]);
                         prop_assert!(behind.abs() <= pr + 8.0 * eps * (l + p[0].abs() + p[1].abs()), "{}: polygon reaches {behind:e} beyond the normal's plane", ctx());
                         prop_assert!(nrm[0] * d[0] + nrm[1] * d[1] <= 4.0 * eps, "{}: normal faces away from the ray", ctx());
+                    }
+                }
+                // The polygon's own local cast, placed by hand where the
+                // placement is a translation: the hit the ray cast places,
+                // with a unit normal and a gap across the face that the
+                // world bound covers at the hit's incidence.
+                if angle.is_none() {
+                    let local_origin = ray.origin() - tp.translation() - polygon.reference_point();
+                    let limit = if max > 0.0 { max } else { R::INFINITY };
+                    let local = polygon.cast_local_ray(local_origin, ray.direction(), limit).unwrap();
+                    if robust {
+                        prop_assert_eq!(core::mem::discriminant(&local.outcome), core::mem::discriminant(&clip.outcome));
+                    }
+                    if let (RayOutcome::Hit(l), RayOutcome::Hit(w)) = (local.outcome, clip.outcome) {
+                        let ctx = || format!("local {l:?} against placed {w:?}");
+                        prop_assert!((l.distance as f64 - w.distance as f64).abs() <= w.error_bound as f64, "{}", ctx());
+                        prop_assert!((l.normal.length() as f64 - 1.0).abs() <= 4.0 * eps, "{}: normal not unit", ctx());
+                        prop_assert!((l.normal - w.normal).length() as f64 <= 4.0 * eps, "{}", ctx());
+                        let cos = l.normal.dot(ray.direction()).abs() as f64;
+                        let covered = w.error_bound as f64 * cos * (1.0 + 1e-3);
+                        prop_assert!(l.error_bound >= 0.0 && l.error_bound as f64 <= covered, "{}: gap beyond the bound", ctx());
                     }
                 }
                 // Both paths clip by the same quotients: where the verdict is

@@ -7,7 +7,7 @@
 use super::SMALL_POLYGON_MAX;
 use super::{at, first_reached, polytope_support};
 use crate::real::{Real, V2};
-use crate::result::{gap_hit, RayCast, RayOutcome};
+use crate::result::{gap_hit, RayCast, RayHit, RayOutcome};
 
 /// [`cast_ray_polygon`] for a polygon of at most [`SMALL_POLYGON_MAX`]
 /// vertices, every edge clipped at once: the same per-edge numerators,
@@ -78,9 +78,9 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     if !entered {
         return RayCast::closed_form(RayOutcome::Inside);
     }
-    let normal = (next[entry] - v[entry]).perp_cw().try_normalize().unwrap_or(-d);
-    let gap = rounding.gap(t, normal.dot(d), inner, inner_parallel_outside, latest_exit);
-    RayCast::closed_form(edge_hit(&v[..n], entry, (o, d), (t, exit), normal, gap, rounding))
+    let normal = (next[entry] - v[entry]).perp_cw();
+    let late = rounding.late(t, inner, inner_parallel_outside, latest_exit);
+    RayCast::closed_form(edge_hit(&v[..n], entry, (o, d), (t, exit), normal, late, rounding))
 }
 
 /// The lane of the latest entry: the one a scan from lane 0 keeps, taking
@@ -119,11 +119,11 @@ fn edge_hit<R: Real>(
     (o, d): (V2<R>, V2<R>),
     (t, exit): (R, R),
     normal: V2<R>,
-    gap: R,
+    late: R,
     rounding: FaceRounding<R>,
 ) -> RayOutcome<R> {
     if let Some(first) = along_edge(vertices, i, (o, d), rounding.on_line()).filter(|&first| first < t) {
-        return gap_hit(o, d, first.max(R::ZERO).min(exit), normal, gap);
+        return gap_hit(o, d, first.max(R::ZERO).min(exit), normal, late);
     }
     let n = vertices.len();
     let p = o + d * t;
@@ -148,7 +148,7 @@ fn edge_hit<R: Real>(
         k = wrap(k + step, n);
     }
     let t = end.map_or(t, |end| (end - o).dot(d).max(R::ZERO).min(exit));
-    gap_hit(o, d, t, normal, gap)
+    gap_hit(o, d, t, normal, late)
 }
 
 /// Where a ray that runs along edge `i` (both its ends within `reach` of
@@ -179,7 +179,9 @@ fn along_edge<R: Real>(vertices: &[V2<R>], i: usize, (o, d): (V2<R>, V2<R>), rea
 }
 
 /// Clips the ray against each edge's half-plane (counter-clockwise vertices):
-/// the hit is the last entry, its normal the entered face's.
+/// the hit is the last entry, its normal the entered face's. Every cast
+/// here answers in face form
+/// ([`SupportMap::cast_local_face_ray`](crate::SupportMap::cast_local_face_ray)).
 pub(crate) fn cast_ray_polygon<R: Real>(
     vertices: &[V2<R>],
     o: V2<R>,
@@ -265,6 +267,22 @@ fn first_vertex_reaching(n: usize, from: usize, to: usize, reached: impl Fn(usiz
     Some(wrap(from + step, n))
 }
 
+/// A cast in face form as [`SupportMap::cast_local_ray`](crate::SupportMap::cast_local_ray)
+/// gives it: the unit normal (the ray's reverse for a face too small to
+/// have one), and the gap across the face, the lateness times the
+/// incidence.
+pub(crate) fn face_cast_to_local<R: Real>(cast: RayCast<R>, d: V2<R>) -> RayCast<R> {
+    let outcome = match cast.outcome {
+        RayOutcome::Hit(h) => {
+            let normal = V2::from_glam(h.normal).try_normalize().unwrap_or(-d);
+            let gap = h.error_bound * normal.dot(d).abs();
+            RayOutcome::Hit(RayHit { normal: normal.to_glam(), error_bound: gap, ..h })
+        }
+        other => other,
+    };
+    RayCast { outcome, ..cast }
+}
+
 /// `i mod n` for `i < 2 n`, without a division.
 #[inline(always)]
 fn wrap(i: usize, n: usize) -> usize {
@@ -340,17 +358,15 @@ impl<R: Real> FaceRounding<R> {
         self.across + R::from_u32(8) * R::EPSILON * t.abs()
     }
 
-    /// The gap to report across the face of a hit at `t` whose unit normal
-    /// meets the ray at `n_dot_d`: how much later than `t` an exact ray may
-    /// enter. Where the faces moved in are entered, no later than they are;
-    /// where they are not (the exact ray may miss, or cross a sliver), no
-    /// later than the faces moved out are left (`outer_exit`), and never
-    /// more than twice the size. Times the incidence, as the error bound
-    /// divides a gap by it.
-    fn gap(&self, t: R, n_dot_d: R, inner: Span<R>, inner_empty: bool, outer_exit: R) -> R {
+    /// How much later than `t` an exact ray may enter: where the faces
+    /// moved in are entered, no later than they are; where they are not
+    /// (the exact ray may miss, or cross a sliver), no later than the faces
+    /// moved out are left (`outer_exit`), and never more than twice the
+    /// size.
+    fn late(&self, t: R, inner: Span<R>, inner_empty: bool, outer_exit: R) -> R {
         let missed = inner_empty || inner.upper < inner.lower || !inner.lower.is_finite();
         let latest = if missed { outer_exit.min(t + R::TWO * self.size) } else { inner.lower };
-        (latest - t).max(R::ZERO) * n_dot_d.abs()
+        (latest - t).max(R::ZERO)
     }
 }
 
@@ -477,10 +493,9 @@ impl<R: Real> Clip<R> {
         RayCast::closed_form(match self.entered {
             None => RayOutcome::Inside,
             Some((edge, normal)) => {
-                let normal = normal.try_normalize().unwrap_or(-self.d);
                 let t = self.span.lower;
-                let gap = self.rounding.gap(t, normal.dot(self.d), self.inner, self.inner_empty, self.outer_exit);
-                edge_hit(vertices, edge, (self.o, self.d), (t, self.span.upper), normal, gap, self.rounding)
+                let late = self.rounding.late(t, self.inner, self.inner_empty, self.outer_exit);
+                edge_hit(vertices, edge, (self.o, self.d), (t, self.span.upper), normal, late, self.rounding)
             }
         })
     }

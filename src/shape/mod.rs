@@ -172,6 +172,26 @@ pub trait SupportMap<R: Real> {
         None
     }
 
+    /// Whether [`cast_local_face_ray`](Self::cast_local_face_ray) answers:
+    /// a method apart, so that a ray cast at a shape whose type is known
+    /// when the program is compiled links only the one cast it uses.
+    #[doc(hidden)]
+    fn casts_face_rays(&self) -> bool {
+        false
+    }
+
+    /// A polygon core's [`cast_local_ray`](Self::cast_local_ray) in the
+    /// form its faces give it: the hit's normal is the entered face's
+    /// outward normal at the length its edge gives it, and its error bound
+    /// is how much later along the ray an exact ray may enter. The world
+    /// hit's unit normal and error bound then both wait for one square
+    /// root, not for each other. `None` (the default) for every other shape.
+    #[doc(hidden)]
+    fn cast_local_face_ray(&self, origin: R::Vector, direction: R::Vector, max_length: R) -> Option<LocalRayCast<R>> {
+        let _ = (origin, direction, max_length);
+        None
+    }
+
     /// The radius of a disk centered on [`center`](Self::center), whose
     /// rays are cast in closed form straight into the world frame, with the
     /// same arithmetic on every target and through `dyn SupportMap` alike.
@@ -225,6 +245,15 @@ pub trait SupportMap<R: Real> {
     }
 }
 
+/// A face-form cast ([`SupportMap::cast_local_face_ray`]) as
+/// [`SupportMap::cast_local_ray`] gives it: with a unit normal and the gap
+/// across the face. Out of line on bare metal, so that one copy serves
+/// every polygon type a firmware's trait objects link.
+#[cfg_attr(target_os = "none", inline(never))]
+pub(crate) fn unit_face_cast<R: Real>(cast: Option<LocalRayCast<R>>, direction: R::Vector) -> Option<LocalRayCast<R>> {
+    Some(crate::polytope::face_cast_to_local(cast?, crate::real::V2::from_glam(direction)))
+}
+
 /// A polygon core's vertices, as [`SupportMap::small_polygon`] (at most
 /// [`SMALL_POLYGON_MAX`]) and [`SupportMap::polygon_core`] (any number)
 /// lend them: counter-clockwise, relative to the reference point.
@@ -263,6 +292,12 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         (**self).cast_local_ray(o, d, max)
+    }
+    fn casts_face_rays(&self) -> bool {
+        (**self).casts_face_rays()
+    }
+    fn cast_local_face_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        (**self).cast_local_face_ray(o, d, max)
     }
     fn disk_radius(&self) -> Option<R> {
         (**self).disk_radius()

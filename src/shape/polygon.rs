@@ -241,6 +241,12 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
         crate::polytope::searched_here::<R, N>(self.len).then(|| super::SmallPolygon { vertices: self.vertices() })
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        super::unit_face_cast(self.cast_local_face_ray(o, d, max), d)
+    }
+    fn casts_face_rays(&self) -> bool {
+        true
+    }
+    fn cast_local_face_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let (o, d) = (V2::from_glam(o), V2::from_glam(d));
         let size = self.bounding_radius_squared.sqrt();
         // Far from the origin, the ray was placed error-free (see

@@ -84,6 +84,12 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
         false
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        super::unit_face_cast(self.cast_local_face_ray(o, d, max), d)
+    }
+    fn casts_face_rays(&self) -> bool {
+        true
+    }
+    fn cast_local_face_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         let o = V2::from_glam(o);
         // |half|_1: at least the bounding radius, with no square root.
         let size = self.half.x + self.half.y;

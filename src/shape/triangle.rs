@@ -71,4 +71,10 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         self.0.cast_local_ray(o, d, max)
     }
+    fn casts_face_rays(&self) -> bool {
+        true
+    }
+    fn cast_local_face_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
+        self.0.cast_local_face_ray(o, d, max)
+    }
 }
