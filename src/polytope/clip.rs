@@ -270,8 +270,11 @@ fn first_vertex_reaching(n: usize, from: usize, to: usize, reached: impl Fn(usiz
 /// A cast in face form as [`SupportMap::cast_local_ray`](crate::SupportMap::cast_local_ray)
 /// gives it: the unit normal (the ray's reverse for a face too small to
 /// have one), and the gap across the face, the lateness times the
-/// incidence.
-pub(crate) fn face_cast_to_local<R: Real>(cast: RayCast<R>, d: V2<R>) -> RayCast<R> {
+/// incidence. Out of line on bare metal, so that one copy serves every
+/// polygon type a firmware's trait objects link.
+#[cfg_attr(target_os = "none", inline(never))]
+pub(crate) fn face_cast_to_local<R: Real>(cast: Option<RayCast<R>>, direction: R::Vector) -> Option<RayCast<R>> {
+    let (cast, d) = (cast?, V2::<R>::from_glam(direction));
     let outcome = match cast.outcome {
         RayOutcome::Hit(h) => {
             let normal = V2::from_glam(h.normal).try_normalize().unwrap_or(-d);
@@ -280,7 +283,7 @@ pub(crate) fn face_cast_to_local<R: Real>(cast: RayCast<R>, d: V2<R>) -> RayCast
         }
         other => other,
     };
-    RayCast { outcome, ..cast }
+    Some(RayCast { outcome, ..cast })
 }
 
 /// `i mod n` for `i < 2 n`, without a division.

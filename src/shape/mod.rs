@@ -245,15 +245,6 @@ pub trait SupportMap<R: Real> {
     }
 }
 
-/// A face-form cast ([`SupportMap::cast_local_face_ray`]) as
-/// [`SupportMap::cast_local_ray`] gives it: with a unit normal and the gap
-/// across the face. Out of line on bare metal, so that one copy serves
-/// every polygon type a firmware's trait objects link.
-#[cfg_attr(target_os = "none", inline(never))]
-pub(crate) fn unit_face_cast<R: Real>(cast: Option<LocalRayCast<R>>, direction: R::Vector) -> Option<LocalRayCast<R>> {
-    Some(crate::polytope::face_cast_to_local(cast?, crate::real::V2::from_glam(direction)))
-}
-
 /// A polygon core's vertices, as [`SupportMap::small_polygon`] (at most
 /// [`SMALL_POLYGON_MAX`]) and [`SupportMap::polygon_core`] (any number)
 /// lend them: counter-clockwise, relative to the reference point.

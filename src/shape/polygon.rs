@@ -241,7 +241,7 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
         crate::polytope::searched_here::<R, N>(self.len).then(|| super::SmallPolygon { vertices: self.vertices() })
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        super::unit_face_cast(self.cast_local_face_ray(o, d, max), d)
+        crate::polytope::face_cast_to_local(self.cast_local_face_ray(o, d, max), d)
     }
     fn casts_face_rays(&self) -> bool {
         true

@@ -84,7 +84,7 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
         false
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
-        super::unit_face_cast(self.cast_local_face_ray(o, d, max), d)
+        crate::polytope::face_cast_to_local(self.cast_local_face_ray(o, d, max), d)
     }
     fn casts_face_rays(&self) -> bool {
         true
