@@ -102,12 +102,19 @@ impl<R: Real> Lanes<R> {
         first_max(&self.outward)
     }
 
+    /// Whether `p` lies strictly inside every edge's line: the deepest
+    /// edge's verdict, without the lane that gives it.
+    #[inline(always)]
+    fn inside(&self) -> bool {
+        self.outward.iter().fold(self.outward[0], |most, &x| most.max(x)) < R::ZERO
+    }
+
     /// The distance, the unit normal from the polygon towards `p` and the
     /// nearest point, as they are where `p` is outside (or on the
     /// boundary): the nearest edge's signed distance, or its corner's
     /// offset.
     #[inline(always)]
-    fn outside(&self, p: V2<R>, deepest: usize) -> (R, V2<R>, V2<R>) {
+    fn outside(&self, p: V2<R>) -> (R, V2<R>, V2<R>) {
         let n = self.n;
         let mut best = first_max(&self.squared.map(|d| -d));
         // A corner, where the edge on its other side has the point's foot
@@ -139,7 +146,7 @@ impl<R: Real> Lanes<R> {
         match (p - corner).try_length_and_unit() {
             Some((distance, normal)) => (distance, normal, corner),
             // On the vertex: touching, along the deepest edge's normal.
-            None => (R::ZERO, self.unit_normal(deepest), corner),
+            None => (R::ZERO, self.unit_normal(self.deepest()), corner),
         }
     }
 }
@@ -154,14 +161,13 @@ impl<R: Real> Lanes<R> {
 /// shorter than the square root of the least normal number): GJK answers.
 pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R>> {
     let lanes = Lanes::new(vertices, p)?;
-    let deepest = lanes.deepest();
-    if lanes.outward[deepest] < R::ZERO {
+    if lanes.inside() {
         // Inside every edge's line: the least depth is over the unit normals.
         let least: [R; M] = core::array::from_fn(|i| lanes.outward[i] / lanes.ee[i].sqrt());
         let best = first_max(&least);
         return Some(Nearest::Inside { depth: -least[best], normal: lanes.unit_normal(best) });
     }
-    let (distance, normal, point) = lanes.outside(p, deepest);
+    let (distance, normal, point) = lanes.outside(p);
     Some(Nearest::Outside { distance, normal, point })
 }
 
@@ -173,9 +179,8 @@ pub(crate) fn nearest<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<Nearest<R
 #[inline(always)]
 pub(crate) fn beyond<R: Real>(vertices: &[V2<R>], p: V2<R>) -> Option<(bool, R, V2<R>, V2<R>)> {
     let lanes = Lanes::new(vertices, p)?;
-    let deepest = lanes.deepest();
-    let (distance, normal, point) = lanes.outside(p, deepest);
-    Some((lanes.outward[deepest] < R::ZERO, distance, normal, point))
+    let (distance, normal, point) = lanes.outside(p);
+    Some((lanes.inside(), distance, normal, point))
 }
 
 /// Whether `p` lies within `radius` of the counter-clockwise polygon
