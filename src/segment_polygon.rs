@@ -74,7 +74,8 @@ pub(crate) fn within<R: Real>(vertices: &[V2<R>], p: V2<R>, q: V2<R>, radius: R)
         beyond[i] = across_p.min(across_q);
         let length2 = (to[i] - from[i]).length_squared();
         least[i] = length2 * length2;
-        let reach = (p - from[i]).length_squared().max((q - from[i]).length_squared()).max(start).max(rr);
+        // `start` is the vertex's squared distance from `p` as well.
+        let reach = start.max((q - from[i]).length_squared()).max(rr);
         most[i] = reach * length2.max(ff);
     }
     let fold = |v: &[R; M], f: fn(R, R) -> R| v.iter().skip(1).fold(v[0], |a, &b| f(a, b));
