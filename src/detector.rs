@@ -159,8 +159,7 @@ impl<R: Real, P> Gjk<R, P> {
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
-            let polygons = crate::sat::Polygons::new(pair, pa, pb);
-            return self.small_polygons_distance(pair, &polygons, &crate::sat::Axes::of(&polygons));
+            return self.small_polygons_distance(pair, (pa, pb), &crate::sat::Axes::new(pair, pa, pb));
         }
         // Shapes whose bounding circles are apart need no verdict: GJK
         // finds their distance, and the closed form would only add its cost.
@@ -179,13 +178,15 @@ impl<R: Real, P> Gjk<R, P> {
     /// `None` where no axis parts them (most pairs in a scene overlap, and
     /// GJK would take several iterations to find it out); the axis that
     /// parts them the most where an edge and a vertex are closest (the
-    /// common case); else GJK's.
+    /// common case); else GJK's. That axis is measured again alone, not
+    /// read off the polygons the axes were measured on: kept for the pairs
+    /// apart, the laid-out polygons slowed the overlapping ones too.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     fn small_polygons_distance<A, B>(
         &self,
         pair: &Pair<'_, R, A, B>,
-        polygons: &crate::sat::Polygons<R>,
+        (pa, pb): (&[V2<R>], &[V2<R>]),
         axes: &crate::sat::Axes<R>,
     ) -> Option<Separation<R>>
     where
@@ -195,7 +196,7 @@ impl<R: Real, P> Gjk<R, P> {
         if !axes.separated() {
             return None;
         }
-        if let Some(found) = polygons.face_and_vertex(axes.most_separating_by_square()) {
+        if let Some(found) = crate::sat::face_and_vertex_by(pair, pa, pb, axes.most_separating_by_square()) {
             return Some(closed_form_separation(pair, found));
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -457,10 +458,9 @@ impl<R: Real, P> Gjk<R, P> {
         // touching after all, the penetration query's).
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
-            let polygons = crate::sat::Polygons::new(&pair, pa, pb);
-            let axes = crate::sat::Axes::of(&polygons);
+            let axes = crate::sat::Axes::new(&pair, pa, pb);
             if axes.separated() {
-                return match self.small_polygons_distance(&pair, &polygons, &axes) {
+                return match self.small_polygons_distance(&pair, (pa, pb), &axes) {
                     Some(s) => Some(apart(s)),
                     None => self.penetration_of(&pair).map(overlapping),
                 };
@@ -1173,7 +1173,7 @@ where
 /// distance, the unit normal from A towards B and the closest points on A
 /// and B, all in the pair frame (a point core against a small polygon; two
 /// small polygons whose closest features are an edge and a vertex,
-/// [`crate::sat::Polygons::face_and_vertex`]).
+/// [`crate::sat::face_and_vertex_by`]).
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
 fn closed_form_separation<R, A, B>(

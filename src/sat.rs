@@ -112,7 +112,7 @@ fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
 
 /// The distance of two polygons whose closest features are an edge and a
 /// vertex, the unit normal from A towards B, and the closest points on A and
-/// on B ([`Polygons::face_and_vertex`]).
+/// on B ([`face_and_vertex_by`]).
 pub(crate) type FaceAndVertex<R> = (R, V2<R>, V2<R>, V2<R>);
 
 /// The pair's two small polygons, both in A's frame relative to A's
@@ -140,34 +140,6 @@ impl<R: Real> Polygons<R> {
     pub fn support(&self, d: V2<R>) -> (V2<R>, u32) {
         let (ia, ib) = (self.a.support(-d), self.b.support(d));
         (self.b.v[ib] - self.a.v[ia], ((ia as u32) << 16) | ib as u32)
-    }
-
-    /// The distance of the polygons where their closest features are an
-    /// edge and a vertex whose foot lies on it (the common case), from axis
-    /// `slot` (A's edges, then B's): an axis whose nearest vertex has its
-    /// foot on the edge separates them by exactly their distance, as the
-    /// foot is a point of the edge's polygon that far from the vertex (no
-    /// axis separates them by more). The distance, the unit normal from A
-    /// towards B, and the closest points on A and on B; `None` where the
-    /// axis does not separate them or the vertex's foot falls off the edge
-    /// (two vertices closest, or another axis's edge).
-    #[inline(always)]
-    pub fn face_and_vertex(&self, slot: usize) -> Option<FaceAndVertex<R>> {
-        let of_a = slot < M;
-        let (own, other) = if of_a { (&self.a, &self.b) } else { (&self.b, &self.a) };
-        let edge = slot % M;
-        let outward = own.normal(edge);
-        // The other's vertex nearest the edge's line (the first, as in every
-        // least here), and its offset along the edge from the edge's start.
-        let nearest = other.v[first_max(&other.v.map(|v| -v.dot(outward)))];
-        // The slot after the last vertex holds the first: the closing edge
-        // ends there.
-        let (start, end) = (own.v[edge], own.v[(edge + 1) % M]);
-        if !(edge < own.len && slot < 2 * M) {
-            return None;
-        }
-        let (distance, unit, foot) = foot_on_edge(start, end, outward, nearest, reach(own, other, outward, edge))?;
-        Some(if of_a { (distance, unit, foot, nearest) } else { (distance, -unit, nearest, foot) })
     }
 
     /// Three vertices of B - A around axis `slot`'s overlap (A's edges
@@ -305,10 +277,19 @@ fn foot_on_edge<R: Real>(p: V2<R>, q: V2<R>, n: V2<R>, v: V2<R>, reach: R) -> Op
     found.then(|| (distance, unit, v - unit * distance))
 }
 
-/// [`Polygons::face_and_vertex`] of axis `slot`, measured as
-/// [`separates_by`] measures it: in the frame of the edge's polygon, its
-/// normal turned once and only the nearest vertex placed, no polygon: what
-/// a cached axis costs to ask again.
+/// The distance of two small polygons where their closest features are an
+/// edge and a vertex whose foot lies on it (the common case), from axis
+/// `slot` (A's edges, then B's): an axis whose nearest vertex has its foot
+/// on the edge separates them by exactly their distance, as the foot is a
+/// point of the edge's polygon that far from the vertex (no axis separates
+/// them by more). The distance, the unit normal from A towards B, and the
+/// closest points on A and on B; `None` where the axis does not separate
+/// them or the vertex's foot falls off the edge (two vertices closest, or
+/// another axis's edge).
+///
+/// Measured as [`separates_by`] measures it: in the frame of the edge's
+/// polygon, its normal turned once and only the nearest vertex placed, no
+/// polygon laid out.
 pub(crate) fn face_and_vertex_by<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     a: &[V2<R>],
@@ -429,7 +410,7 @@ impl<R: Real> Axes<R> {
     /// The axis that separates the polygons the most along its unit
     /// normal, picked by the separation's square over the normal's (no
     /// square root; a pick that under- or overflows is merely not the best,
-    /// which [`Polygons::face_and_vertex`] does not rely on).
+    /// which [`face_and_vertex_by`] does not rely on).
     #[inline(always)]
     pub fn most_separating_by_square(&self) -> usize {
         let key: [R; 2 * M] = core::array::from_fn(|i| {

@@ -276,7 +276,7 @@ mod small {
         /// test says so first, which leaves a separating axis in the cache)
         /// where their closest features are an edge and a vertex: from the
         /// cached axis, else from the one that separates them the most, kept
-        /// for the next step ([`Polygons::face_and_vertex`]). `None` where
+        /// for the next step ([`face_and_vertex_by`]). `None` where
         /// two vertices are closest: GJK answers.
         pub(crate) fn face_and_vertex<A, B>(
             &mut self,
@@ -291,9 +291,8 @@ mod small {
             if let Some(found) = face_and_vertex_by(pair, a, b, self.separating as usize) {
                 return Some(found);
             }
-            let polygons = Polygons::new(pair, a, b);
-            let best = Axes::of(&polygons).most_separating_by_square();
-            let found = polygons.face_and_vertex(best)?;
+            let best = Axes::new(pair, a, b).most_separating_by_square();
+            let found = face_and_vertex_by(pair, a, b, best)?;
             self.separating = best as u32;
             Some(found)
         }
