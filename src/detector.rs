@@ -196,7 +196,7 @@ impl<R: Real, P> Gjk<R, P> {
         if !axes.separated() {
             return None;
         }
-        if let Some(found) = crate::sat::face_and_vertex_by(pair, pa, pb, axes.most_separating_by_square()) {
+        if let Some(found) = crate::sat::face_and_vertex_placed(pair, pa, pb, axes.most_separating_by_square()) {
             return Some(closed_form_separation(pair, found));
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -1173,7 +1173,7 @@ where
 /// distance, the unit normal from A towards B and the closest points on A
 /// and B, all in the pair frame (a point core against a small polygon; two
 /// small polygons whose closest features are an edge and a vertex,
-/// [`crate::sat::face_and_vertex_by`]).
+/// [`crate::sat::face_and_vertex_placed`]).
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
 fn closed_form_separation<R, A, B>(

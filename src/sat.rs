@@ -112,7 +112,7 @@ fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
 
 /// The distance of two polygons whose closest features are an edge and a
 /// vertex, the unit normal from A towards B, and the closest points on A and
-/// on B ([`face_and_vertex_by`]).
+/// on B ([`face_and_vertex_placed`]).
 pub(crate) type FaceAndVertex<R> = (R, V2<R>, V2<R>, V2<R>);
 
 /// The pair's two small polygons, both in A's frame relative to A's
@@ -287,9 +287,59 @@ fn foot_on_edge<R: Real>(p: V2<R>, q: V2<R>, n: V2<R>, v: V2<R>, reach: R) -> Op
 /// them or the vertex's foot falls off the edge (two vertices closest, or
 /// another axis's edge).
 ///
-/// Measured as [`separates_by`] measures it: in the frame of the edge's
-/// polygon, its normal turned once and only the nearest vertex placed, no
-/// polygon laid out.
+/// Measured as the axes are ([`Axes::new`]), in the pair frame on B's
+/// placed vertices, but for the one axis alone: no polygon laid out, and
+/// the rounding of the answer the axes' own.
+pub(crate) fn face_and_vertex_placed<R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    a: &[V2<R>],
+    b: &[V2<R>],
+    slot: usize,
+) -> Option<FaceAndVertex<R>>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    // The other polygon's vertices in the pair frame, padded as `Padded`
+    // pads them; the first nearest to the edge's line along `n`, and how
+    // far beyond the line through `p` the nearest reaches (times `|n|`).
+    let nearest = |v: [V2<R>; M], n: V2<R>, p: V2<R>| {
+        let (xs, ys) = (v.map(|v| v.x), v.map(|v| v.y));
+        (v[first_max(&v.map(|v| -v.dot(n)))], least_dot(n, &xs, &ys) - n.dot(p))
+    };
+    if slot < M {
+        let (p, q) = edge_ends(a, slot)?;
+        let n = (q - p).perp_cw();
+        let (v, reach) = nearest(padded(b, |p| pair.b_to_pair(p)), n, p);
+        let (distance, unit, foot) = foot_on_edge(p, q, n, v, reach)?;
+        Some((distance, unit, foot, v))
+    } else {
+        let (p, q) = edge_ends(b, slot.checked_sub(M)?)?;
+        let n = pair.b_vector_to_pair((q - p).perp_cw());
+        let (p, q) = (pair.b_to_pair(p), pair.b_to_pair(q));
+        let (v, reach) = nearest(padded(a, |p| p), n, p);
+        let (distance, unit, foot) = foot_on_edge(p, q, n, v, reach)?;
+        Some((distance, -unit, v, foot))
+    }
+}
+
+/// Up to [`M`] vertices placed by `place`, the unused slots copies of the
+/// first, as [`Padded`] holds them.
+#[inline(always)]
+fn padded<R: Real>(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>) -> [V2<R>; M] {
+    let first = vertices.first().copied().unwrap_or_default();
+    let mut v: [V2<R>; M] = core::array::from_fn(|i| vertices.get(i).copied().unwrap_or(first));
+    // A loop, not `map`, as in `Padded::new`.
+    for p in &mut v {
+        *p = place(*p);
+    }
+    v
+}
+
+/// [`face_and_vertex_placed`], measured as [`separates_by`] measures it:
+/// in the frame of the edge's polygon, its normal turned once and only the
+/// nearest vertex placed: what a cached axis costs to ask again.
 pub(crate) fn face_and_vertex_by<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     a: &[V2<R>],
@@ -410,7 +460,7 @@ impl<R: Real> Axes<R> {
     /// The axis that separates the polygons the most along its unit
     /// normal, picked by the separation's square over the normal's (no
     /// square root; a pick that under- or overflows is merely not the best,
-    /// which [`face_and_vertex_by`] does not rely on).
+    /// which [`face_and_vertex_placed`] does not rely on).
     #[inline(always)]
     pub fn most_separating_by_square(&self) -> usize {
         let key: [R; 2 * M] = core::array::from_fn(|i| {

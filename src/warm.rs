@@ -122,7 +122,10 @@ mod small {
     use crate::quad_start::surely_encloses;
     use crate::real::{Real, V2};
     use crate::result::{Detection, Penetration, Status};
-    use crate::sat::{face_and_vertex_by, penetration_along, separates_by, Axes, Coordinates, FaceAndVertex, Polygons};
+    use crate::sat::{
+        face_and_vertex_by, face_and_vertex_placed, penetration_along, separates_by, Axes, Coordinates, FaceAndVertex,
+        Polygons,
+    };
     use crate::shape::SupportMap;
     use crate::simplex::{Payload, Simplex, Vertex};
 
@@ -276,7 +279,7 @@ mod small {
         /// test says so first, which leaves a separating axis in the cache)
         /// where their closest features are an edge and a vertex: from the
         /// cached axis, else from the one that separates them the most, kept
-        /// for the next step ([`face_and_vertex_by`]). `None` where
+        /// for the next step ([`face_and_vertex_placed`]). `None` where
         /// two vertices are closest: GJK answers.
         pub(crate) fn face_and_vertex<A, B>(
             &mut self,
@@ -292,7 +295,7 @@ mod small {
                 return Some(found);
             }
             let best = Axes::new(pair, a, b).most_separating_by_square();
-            let found = face_and_vertex_by(pair, a, b, best)?;
+            let found = face_and_vertex_placed(pair, a, b, best)?;
             self.separating = best as u32;
             Some(found)
         }
