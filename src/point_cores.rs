@@ -55,11 +55,24 @@ impl<R: Real> PointCores<R> {
         vv >= R::MIN_POSITIVE && vv < radius * radius * (R::ONE - R::from_u32(16) * R::EPSILON)
     }
 
-    /// The loop's certified lower bound, `w . v / |v|` with `v = w`.
+    /// The cores' distance and unit offset, with the loop's certified lower
+    /// bound `w . w / |w|` (`v = w`). Where the offset is neither tiny nor
+    /// huge the distance is that same root, and one root serves both: the
+    /// compiler does not merge the two it would otherwise take.
     #[inline(always)]
-    fn lower_bound(&self) -> R {
-        let vv = self.w.w.length_squared();
-        R::ZERO.max(self.w.w.dot(self.w.w) / vv.sqrt())
+    fn length_unit_and_lower_bound(&self) -> Option<(R, V2<R>, R)> {
+        let w = self.w.w;
+        let vv = w.length_squared();
+        let root = vv.sqrt();
+        let lower_bound = R::ZERO.max(vv / root);
+        // Above this square the largest coordinate is at least eps^2, where
+        // `try_length_and_unit` takes this same root.
+        let tiny = R::EPSILON * R::EPSILON;
+        if vv >= R::from_u32(4) * tiny * tiny && vv.is_finite() {
+            return Some((root, V2::new(w.x / root, w.y / root), lower_bound));
+        }
+        let (length, unit) = w.try_length_and_unit()?;
+        Some((length, unit, lower_bound))
     }
 
     /// The distance query's answer; `None` where the shapes touch or overlap.
@@ -69,7 +82,7 @@ impl<R: Real> PointCores<R> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        let (core_distance, normal) = self.w.w.try_length_and_unit()?;
+        let (core_distance, normal, lower_bound) = self.length_unit_and_lower_bound()?;
         let (radius_a, radius_b) = (pair.radius_a(), pair.radius_b());
         let radius = radius_a + radius_b;
         if core_distance <= radius {
@@ -83,7 +96,7 @@ impl<R: Real> PointCores<R> {
             normal: pair.to_world_vector(normal),
             point_a: pair.to_world_point(a + normal * radius_a),
             point_b: pair.to_world_point(b - normal * radius_b),
-            error_bound: (core_distance - self.lower_bound()).max(R::ZERO),
+            error_bound: (core_distance - lower_bound).max(R::ZERO),
             iterations: 2,
             status: Status::Converged,
         })
@@ -98,18 +111,16 @@ impl<R: Real> PointCores<R> {
     {
         let radius = pair.radius();
         // A closest point too small to give a direction is touching.
-        let (distance, normal) = self
-            .w
-            .w
-            .try_length_and_unit()
-            .unwrap_or_else(|| (R::ZERO, pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO))));
+        let (distance, normal, lower_bound) = self
+            .length_unit_and_lower_bound()
+            .unwrap_or_else(|| (R::ZERO, pair.centers.try_normalize().unwrap_or(V2::new(R::ONE, R::ZERO)), R::ZERO));
         if distance > radius {
             return None;
         }
         Some(Penetration {
             normal: pair.to_world_vector(normal),
             depth: (radius - distance).max(R::ZERO),
-            error_bound: (distance - self.lower_bound()).max(R::ZERO),
+            error_bound: (distance - lower_bound).max(R::ZERO),
             iterations: 2,
             status: Status::Converged,
         })
