@@ -70,6 +70,14 @@ impl<R: Real, P> Gjk<R, P> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
+        // Two small f64 polygons, where the processor has AVX2: the axes'
+        // verdict (as `intersects_of` takes it) in its wide lanes.
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(target_os = "none")))]
+        if self.config.detect_epsilon() == R::ZERO {
+            if let Some(separated) = separated_in_wide_lanes(a, ta, b, tb) {
+                return Detection { intersecting: !separated, iterations: 1, status: Status::Converged };
+            }
+        }
         self.intersects_of(&Pair::new(a, ta, b, tb))
     }
 
@@ -1479,4 +1487,30 @@ where
         iterations: core.iterations,
         status: core.status,
     })
+}
+
+/// Whether the separating axes part two small f64 polygons, measured in
+/// code compiled for AVX2 where the processor has it
+/// ([`run_wide`](crate::real::run_wide)); `None` for any other pair or
+/// processor. The pair is placed inside that code too: only the verdict
+/// crosses back.
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(target_os = "none")))]
+#[inline(always)]
+fn separated_in_wide_lanes<R, A, B>(a: &A, ta: &Transform<R>, b: &B, tb: &Transform<R>) -> Option<bool>
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    if !(R::wide_lanes() && Pair::new(a, ta, b, tb).small_polygons().is_some()) {
+        return None;
+    }
+    crate::real::run_wide(
+        #[inline(always)]
+        || {
+            let pair = Pair::new(a, ta, b, tb);
+            let (pa, pb) = pair.small_polygons()?;
+            Some(crate::sat::Axes::new_wide(&pair, pa, pb).separated())
+        },
+    )
 }

@@ -65,8 +65,11 @@ mod sealed {
         /// in order, keeping the smaller (the one it has on a tie), so SIMD
         /// lanes, where the target has them, give the scalar fold's values
         /// (in f32 its bits; in f64 a zero's sign may differ).
+        /// `WIDE` asks for four f64 lanes a register, where the processor
+        /// has them ([`wide_lanes`](Self::wide_lanes)); only code compiled
+        /// for them should ask (`run_wide`).
         #[inline(always)]
-        fn least_dots8(nx: &[Self; 8], ny: &[Self; 8], xs: &[Self; 8], ys: &[Self; 8]) -> [Self; 8]
+        fn least_dots8<const WIDE: bool>(nx: &[Self; 8], ny: &[Self; 8], xs: &[Self; 8], ys: &[Self; 8]) -> [Self; 8]
         where
             Self: super::Real,
         {
@@ -77,6 +80,13 @@ mod sealed {
                 }
             }
             least
+        }
+
+        /// Whether this processor runs four f64 lanes a register (AVX2, its
+        /// wide registers saved by the operating system).
+        #[inline(always)]
+        fn wide_lanes() -> bool {
+            false
         }
 
         /// A point's coordinates as one 64-bit word for a fingerprint: both
@@ -104,7 +114,7 @@ mod sealed {
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
-        fn least_dots8(nx: &[f32; 8], ny: &[f32; 8], xs: &[f32; 8], ys: &[f32; 8]) -> [f32; 8] {
+        fn least_dots8<const WIDE: bool>(nx: &[f32; 8], ny: &[f32; 8], xs: &[f32; 8], ys: &[f32; 8]) -> [f32; 8] {
             super::sse2::least_dots8_f32(nx, ny, xs, ys)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
@@ -137,8 +147,13 @@ mod sealed {
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
-        fn least_dots8(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
-            super::sse2::least_dots8_f64(nx, ny, xs, ys)
+        fn least_dots8<const WIDE: bool>(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
+            super::sse2::least_dots8_f64::<WIDE>(nx, ny, xs, ys)
+        }
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn wide_lanes() -> bool {
+            super::sse2::wide()
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
@@ -157,6 +172,9 @@ mod sealed {
         }
     }
 }
+
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+pub(crate) use sse2::run_wide;
 
 /// Support scans of eight vertices in SSE2, which every x86-64 processor has.
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
@@ -220,7 +238,7 @@ mod sse2 {
     /// Whether this processor runs AVX2 and its operating system saves the
     /// wide registers: asked of the processor once, then read from memory.
     #[inline(always)]
-    fn wide() -> bool {
+    pub fn wide() -> bool {
         use core::sync::atomic::{AtomicU8, Ordering};
         static KNOWN: AtomicU8 = AtomicU8::new(0);
         match KNOWN.load(Ordering::Relaxed) {
@@ -473,9 +491,33 @@ mod sse2 {
     }
 
     #[inline(always)]
-    pub fn least_dots8_f64(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
+    pub fn least_dots8_f64<const WIDE: bool>(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
+        if WIDE && wide() {
+            // SAFETY: `wide` found AVX2 (and with it AVX) on this processor,
+            // its wide registers saved by the operating system.
+            return unsafe { least_dots8_wide_f64(nx, ny, xs, ys) };
+        }
         // SAFETY: as above.
         unsafe { least_dots8_sse_f64(nx, ny, xs, ys) }
+    }
+
+    /// `f`, compiled for AVX2 and run so where [`wide`] finds it (else as
+    /// it is): `f` then asks for wide lanes where it has use for them
+    /// ([`Real::wide_lanes`](super::Real::wide_lanes)). Only a small `f`
+    /// gains: a whole query compiled so spilled its registers and called
+    /// its helpers out of line.
+    #[inline(always)]
+    pub fn run_wide<T>(f: impl FnOnce() -> T) -> T {
+        #[target_feature(enable = "avx,avx2")]
+        #[inline(never)]
+        fn compiled_wide<T>(f: impl FnOnce() -> T) -> T {
+            f()
+        }
+        if wide() {
+            // SAFETY: as in `least_dots8_f64`.
+            return unsafe { compiled_wide(f) };
+        }
+        f()
     }
 
     #[inline(always)]
@@ -590,6 +632,27 @@ mod sse2 {
         // SAFETY: two registers of four f32 lanes are eight f32s, in lane
         // order, and every bit pattern is a valid f32.
         unsafe { core::mem::transmute::<[__m128; 2], [f32; 8]>(least) }
+    }
+
+    /// [`least_dots8_sse_f32`]'s layout in f64, four axes a register: a
+    /// broadcast vertex costs a multiply, an add and a minimum for four
+    /// axes, half the operations of two lanes. Worth it only inlined into
+    /// code compiled for AVX: called out of SSE2 code, the arrays crossing
+    /// the boundary cost more than it saves.
+    #[target_feature(enable = "avx")]
+    #[inline]
+    fn least_dots8_wide_f64(nx: &[f64; 8], ny: &[f64; 8], xs: &[f64; 8], ys: &[f64; 8]) -> [f64; 8] {
+        let quad = |a: &[f64; 8], k: usize| _mm256_setr_pd(a[k], a[k + 1], a[k + 2], a[k + 3]);
+        let (nx0, nx1, ny0, ny1) = (quad(nx, 0), quad(nx, 4), quad(ny, 0), quad(ny, 4));
+        let mut least = [_mm256_set1_pd(f64::INFINITY); 2];
+        for (&x, &y) in xs.iter().zip(ys) {
+            let (x, y) = (_mm256_set1_pd(x), _mm256_set1_pd(y));
+            least[0] = _mm256_min_pd(_mm256_add_pd(_mm256_mul_pd(nx0, x), _mm256_mul_pd(ny0, y)), least[0]);
+            least[1] = _mm256_min_pd(_mm256_add_pd(_mm256_mul_pd(nx1, x), _mm256_mul_pd(ny1, y)), least[1]);
+        }
+        // SAFETY: two registers of four f64 lanes are eight f64s, in lane
+        // order, and every bit pattern is a valid f64.
+        unsafe { core::mem::transmute::<[__m256d; 2], [f64; 8]>(least) }
     }
 
     /// Two lanes: an axis at a time, its eight dots in four registers
@@ -1025,9 +1088,16 @@ mod tests {
             assert_eq!(lanes.map(f32::to_bits), scalar.map(f32::to_bits), "{nx32:?} {ny32:?} {xs32:?} {ys32:?}");
             // f64: the same values (a tree of minima may differ in a zero's
             // sign).
-            let lanes = super::sse2::least_dots8_f64(&nx, &ny, &xs, &ys);
+            let lanes = super::sse2::least_dots8_f64::<false>(&nx, &ny, &xs, &ys);
             let scalar = folded(&nx, &ny, &xs, &ys, f64::INFINITY);
             assert_eq!(lanes, scalar, "{nx:?} {ny:?} {xs:?} {ys:?}");
+            // Four lanes, where the processor has them (else two again):
+            // the scalar fold's order, so its bits.
+            let wide = super::sse2::least_dots8_f64::<true>(&nx, &ny, &xs, &ys);
+            if super::sse2::wide() {
+                assert_eq!(wide.map(f64::to_bits), scalar.map(f64::to_bits), "{nx:?} {ny:?} {xs:?} {ys:?}");
+            }
+            assert_eq!(wide, scalar, "{nx:?} {ny:?} {xs:?} {ys:?}");
         }
     }
 

@@ -101,11 +101,12 @@ fn least_dot<R: Real>(n: V2<R>, xs: &[R; M], ys: &[R; M]) -> R {
 /// far `other` reaches past the edge's line, times the normal's length).
 /// Slots past the last edge have a zero normal and a reach of zero, which
 /// separates nothing and, scaled, leads nothing ([`scaled_separation`]).
+/// `WIDE`: in four f64 lanes a register, where code compiled for them asks.
 #[inline(always)]
-fn faces<R: Real>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
+fn faces<R: Real, const WIDE: bool>(own: &Padded<R>, other: &Padded<R>) -> ([V2<R>; M], [R; M]) {
     let normals: [V2<R>; M] = core::array::from_fn(|i| own.normal(i));
     let (nx, ny) = (normals.map(|n| n.x), normals.map(|n| n.y));
-    let least = R::least_dots8(&nx, &ny, &other.xs, &other.ys);
+    let least = R::least_dots8::<WIDE>(&nx, &ny, &other.xs, &other.ys);
     let least = core::array::from_fn(|i| least[i] - normals[i].dot(own.v[i]));
     (normals, least)
 }
@@ -394,12 +395,30 @@ impl<R: Real> Axes<R> {
         Self::of(&Polygons::new(pair, a, b))
     }
 
+    /// [`new`](Self::new) in four f64 lanes a register, for code compiled
+    /// for them (`run_wide`); elsewhere the same.
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    #[inline(always)]
+    pub fn new_wide<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Self
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        Self::of_lanes::<true>(&Polygons::new(pair, a, b))
+    }
+
     /// Every axis of the two polygons.
     #[inline(always)]
     pub fn of(polygons: &Polygons<R>) -> Self {
+        Self::of_lanes::<false>(polygons)
+    }
+
+    /// [`of`](Self::of), in four f64 lanes a register where `WIDE`.
+    #[inline(always)]
+    fn of_lanes<const WIDE: bool>(polygons: &Polygons<R>) -> Self {
         let (pa, pb) = (&polygons.a, &polygons.b);
-        let (na, la) = faces(pa, pb);
-        let (nb, lb) = faces(pb, pa);
+        let (na, la) = faces::<R, WIDE>(pa, pb);
+        let (nb, lb) = faces::<R, WIDE>(pb, pa);
         // B's face normals point away from B, towards A: turned round, every
         // normal points from A towards B.
         let normals = core::array::from_fn(|i| if i < M { na[i] } else { -nb[i - M] });
