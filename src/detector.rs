@@ -167,7 +167,7 @@ impl<R: Real, P> Gjk<R, P> {
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
-            return self.small_polygons_distance(pair, (pa, pb), &crate::sat::Axes::new(pair, pa, pb));
+            return self.small_polygons_distance(pair, (pa, pb), &crate::sat::Axes::new_in_wide_lanes(pair, pa, pb));
         }
         // Shapes whose bounding circles are apart need no verdict: GJK
         // finds their distance, and the closed form would only add its cost.

@@ -407,6 +407,24 @@ impl<R: Real> Axes<R> {
         Self::of_lanes::<true>(&Polygons::new(pair, a, b))
     }
 
+    /// [`new`](Self::new), measured in code compiled for AVX2's four f64
+    /// lanes where the processor has them (`run_wide`).
+    #[inline(always)]
+    pub fn new_in_wide_lanes<A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Self
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        if R::wide_lanes() {
+            return crate::real::run_wide(
+                #[inline(always)]
+                || Self::new_wide(pair, a, b),
+            );
+        }
+        Self::new(pair, a, b)
+    }
+
     /// Every axis of the two polygons.
     #[inline(always)]
     pub fn of(polygons: &Polygons<R>) -> Self {
