@@ -70,6 +70,11 @@ impl<R: Real, P> Gjk<R, P> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
+        let pair = Pair::new(a, ta, b, tb);
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if pair.inner_disks_overlap() {
+            return Detection { intersecting: true, iterations: 0, status: Status::Converged };
+        }
         // Two small f64 polygons, where the processor has AVX2: the axes'
         // verdict (as `intersects_of` takes it) in its wide lanes.
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(target_os = "none")))]
@@ -78,7 +83,7 @@ impl<R: Real, P> Gjk<R, P> {
                 return Detection { intersecting: !separated, iterations: 1, status: Status::Converged };
             }
         }
-        self.intersects_of(&Pair::new(a, ta, b, tb))
+        self.intersects_of(&pair)
     }
 
     /// [`intersects`](Self::intersects) of a placed pair.
@@ -158,6 +163,10 @@ impl<R: Real, P> Gjk<R, P> {
                 }
                 return core.separation(pair);
             }
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if pair.inner_disks_overlap() {
+            return None;
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
@@ -581,6 +590,10 @@ impl<R: Real, P> Gjk<R, P> {
     {
         let mut pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if pair.inner_disks_overlap() {
+            return Detection { intersecting: true, iterations: 0, status: Status::Converged };
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO {
             if let Some((pa, pb)) = pair.small_polygons() {
                 return cache.intersects_small(&pair, pa, pb);
@@ -615,6 +628,9 @@ impl<R: Real, P> Gjk<R, P> {
         let pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
+            if pair.inner_disks_overlap() {
+                return None;
+            }
             // The cold query's verdict first, as it takes it (from the
             // cached axis or triangle where either still decides).
             if cache.intersects_small(&pair, pa, pb).intersecting {

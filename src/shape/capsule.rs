@@ -87,6 +87,11 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
     fn is_polytope(&self) -> bool {
         true
     }
+    /// The center is the core's midpoint, exactly (a halving).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        super::squared_down(self.radius)
+    }
     fn reference_point(&self) -> R::Vector {
         self.core.reference_point()
     }

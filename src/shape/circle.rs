@@ -100,6 +100,10 @@ impl<R: Real> SupportMap<R> for Circle<R> {
     fn disk_radius(&self) -> Option<R> {
         Some(self.radius)
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        super::squared_down(self.radius)
+    }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         Some(cast_ray_disk(V2::zero(), self.radius, V2::from_glam(o), V2::from_glam(d), max))
     }

@@ -243,6 +243,31 @@ pub trait SupportMap<R: Real> {
     fn segment_core(&self) -> Option<[V2<R>; 2]> {
         None
     }
+
+    /// The square of a radius, rounded down, within which every point about
+    /// [`center`](Self::center) belongs to the shape: where two such disks
+    /// overlap, so do the shapes, and the intersection test and the
+    /// distance query answer before any support (most deeply overlapping
+    /// pairs in a scene). Zero, the default, claims no disk. Hosts only, as
+    /// [`small_polygon`](Self::small_polygon).
+    #[doc(hidden)]
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        R::ZERO
+    }
+}
+
+/// `r^2` rounded down, for [`SupportMap::inner_radius_squared`]: zero
+/// below the normal range, where rounding is no longer relative.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn squared_down<R: Real>(r: R) -> R {
+    let square = r * r;
+    if square >= R::MIN_POSITIVE {
+        square * (R::ONE - R::TWO * R::EPSILON)
+    } else {
+        R::ZERO
+    }
 }
 
 /// A polygon core's vertices, as [`SupportMap::small_polygon`] (at most
@@ -308,5 +333,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn segment_core(&self) -> Option<[V2<R>; 2]> {
         (**self).segment_core()
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        (**self).inner_radius_squared()
     }
 }

@@ -31,6 +31,8 @@ pub struct Polygon<R: Real, const N: usize> {
     /// root is available. Only queries that need the pair's size take the
     /// root (the intersection test with the default zero margin does not).
     bounding_radius_squared: R,
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    inner_radius_squared: R,
 }
 
 impl<R: Real, const N: usize> Polygon<R, N> {
@@ -65,6 +67,8 @@ impl<R: Real, const N: usize> Polygon<R, N> {
             len,
             center: frame.center,
             bounding_radius_squared: frame.bounding_radius_squared,
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            inner_radius_squared: frame.inner_radius_squared,
         }
     }
 
@@ -235,6 +239,10 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
         Some(super::SmallPolygon { vertices: self.vertices() })
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        self.inner_radius_squared
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn searched_polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {

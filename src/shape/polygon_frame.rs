@@ -26,6 +26,9 @@ pub struct Frame<R> {
     /// Squared, so a firmware that only tests polygons for overlap links no
     /// square root.
     pub bounding_radius_squared: R,
+    /// Squared as well: see [`SupportMap::inner_radius_squared`](crate::SupportMap).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    pub inner_radius_squared: R,
 }
 
 macro_rules! polygon_frame {
@@ -70,7 +73,49 @@ macro_rules! polygon_frame {
                     r2 = max(r2, d.x * d.x + d.y * d.y);
                     i += 1;
                 }
-                Ok(Frame { reference, center, bounding_radius_squared: r2 })
+                Ok(Frame {
+                    reference,
+                    center,
+                    bounding_radius_squared: r2,
+                    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+                    inner_radius_squared: inner_radius_squared(v, center, r2),
+                })
+            }
+
+            /// The square of the least distance from `center` to an edge's
+            /// line, rounded down past its rounding: each distance is within
+            /// 16 eps R of the true one (R the bounding radius, which bounds
+            /// it), so its square within 32 eps R^2, and twice that is taken
+            /// off. Zero where the center is not inside by more, or where a
+            /// product could leave the normal range and round by more.
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            const fn inner_radius_squared(v: &[V2<$R>], center: V2<$R>, r2: $R) -> $R {
+                let eps = <$R>::EPSILON;
+                let normal = <$R>::MIN_POSITIVE / eps;
+                if !(r2 > normal && r2 < <$R>::MAX * eps) {
+                    return 0.0;
+                }
+                let mut least = r2;
+                let mut i = 0;
+                while i < v.len() {
+                    let e = sub(at(v, i + 1), v[i]);
+                    let length2 = e.x * e.x + e.y * e.y;
+                    let c = cross(e, sub(center, v[i]));
+                    if !(c > 0.0 && length2 > normal) {
+                        return 0.0;
+                    }
+                    let h2 = c / length2 * c;
+                    if h2 < least {
+                        least = h2;
+                    }
+                    i += 1;
+                }
+                let bound = least * (1.0 - 8.0 * eps) - 64.0 * eps * r2;
+                if bound > 0.0 {
+                    bound
+                } else {
+                    0.0
+                }
             }
 
             /// Half of a `width` by `height` box, both checked as lengths:

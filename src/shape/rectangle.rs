@@ -78,6 +78,10 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
     fn bounding_radius(&self) -> R {
         self.half.length()
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        super::squared_down(self.half.x.min(self.half.y))
+    }
     #[cfg(feature = "far-geometry")]
     /// Centred on the local origin.
     fn far_from_origin(&self) -> bool {

@@ -52,6 +52,10 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
         self.0.polygon_core()
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn inner_radius_squared(&self) -> R {
+        self.0.inner_radius_squared()
+    }
     fn is_polytope(&self) -> bool {
         true
     }
