@@ -38,7 +38,8 @@ fn split<R: Real>(a: R) -> (R, R) {
 /// `sum + prod.0 * prod.1 ...` as if in twice the precision, then rounded:
 /// within an ulp or so of the exact value, plus `(n eps)^2` of the terms'
 /// magnitudes (Ogita, Rump and Oishi's Sum2 over the products' exact
-/// halves). One copy for both components on bare metal, to keep flash small.
+/// halves). One copy for both components on bare metal: inlined twice, it
+/// would take twice a microcontroller's scarce flash for the same work.
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline(always))]
 fn accurate_sum<R: Real>(sums: [R; 2], products: [(R, R); 4]) -> R {

@@ -389,8 +389,9 @@ impl<R: Real, P> Gjk<R, P> {
             // would vouch for.
             return Ok(Manifold::empty(R::vector(R::ONE, R::ZERO), 0, Status::Converged));
         };
-        // On bare metal the clipping runs apart from the queries above, so
-        // their stack needs never add up.
+        // On bare metal the clipping runs after the queries above have
+        // returned, so that a manifold needs no more of a microcontroller's
+        // small stack than its deepest part.
         #[cfg(target_os = "none")]
         return in_own_frame(move || {
             let mut manifold = Manifold::empty(normal, iterations, status);
@@ -425,7 +426,8 @@ impl<R: Real, P> Gjk<R, P> {
         P: PenetrationSolver<R>,
     {
         // Bare metal and wasm run the two queries one after the other (an
-        // early return, not a `match`), so their stack needs never add up.
+        // early return, not a `match`), so that the pair needs no more of a
+        // small stack than the deeper query.
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         {
             if let Some(s) = in_own_frame(|| self.distance(a, ta, b, tb)) {
@@ -1444,8 +1446,8 @@ where
 
 /// The penetration of rounded shapes whose cores are apart, in closed form
 /// from the core distance; `None` when the shapes are certainly apart. Not
-/// inlined on bare metal, so its working values are not on the stack while
-/// GJK runs.
+/// inlined on bare metal, so that a microcontroller's small stack holds its
+/// working values and GJK's one after the other, never both.
 #[cfg_attr(target_os = "none", inline(never))]
 fn rounded_overlap<R, A, B, P>(pair: &Pair<'_, R, A, B>, core: &CoreSeparation<'_, R, P>) -> Option<Penetration<R>>
 where

@@ -99,9 +99,10 @@ pub(crate) struct Corner<R> {
     /// The support id, where a support between two corners can use it.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     id: u32,
-    /// The outward unit normal of the edge to the next corner, kept where
-    /// the stack has room: the closest edge's normal is then read, not
-    /// taken again (a square root and a division before every support).
+    /// The outward unit normal of the edge to the next corner, kept on
+    /// hosts only, whose stacks have room for it where a microcontroller's
+    /// do not: the closest edge's normal is then read, not taken again (a
+    /// square root and a division before every support).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     normal: V2<R>,
 }

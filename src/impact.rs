@@ -214,8 +214,9 @@ where
     let mut iterations = 0;
     let mut last: Option<(R, Separation<R>)> = None;
     loop {
-        // Made one at a time and borrowed, to keep the distance query's stack
-        // small.
+        // Made one at a time and borrowed, not held across the loop: the
+        // distance query below then has a microcontroller's small stack to
+        // itself.
         let ta = sweep_a.transform_at(t);
         let tb = sweep_b.transform_at(t);
         iterations += 1;

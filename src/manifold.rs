@@ -308,8 +308,9 @@ fn along_line<R: Real>(
     let e = end.0 - from;
     let Some(onward) = e.try_normalize() else { return end };
     let (q, qid) = support(normal + onward * (R::ONE / R::from_u32(1024)));
-    // `beyond_on_line`'s test, written out: on bare metal a call here would
-    // deepen the manifold's stack.
+    // `beyond_on_line`'s test, written out: the manifold is the deepest
+    // query on a microcontroller's small stack, and a call here would add
+    // a frame to it.
     let f = q - from;
     let slack = R::from_u32(4) * R::EPSILON * e.length_squared().max(f.length_squared());
     if qid == end.1 || qid == NO_FEATURE || e.cross(f).abs() > slack || e.dot(f) <= e.length_squared() {
