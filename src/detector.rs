@@ -75,6 +75,10 @@ impl<R: Real, P> Gjk<R, P> {
         if pair.inner_disks_overlap() {
             return Detection { intersecting: true, iterations: 0, status: Status::Converged };
         }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if self.config.detect_epsilon() == R::ZERO && pair.bounding_disks_apart() {
+            return Detection { intersecting: false, iterations: 0, status: Status::Converged };
+        }
         // Two small f64 polygons, where the processor has AVX2: the axes'
         // verdict (as `intersects_of` takes it) in its wide lanes.
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(target_os = "none")))]
@@ -181,7 +185,7 @@ impl<R: Real, P> Gjk<R, P> {
         // Shapes whose bounding circles are apart need no verdict: GJK
         // finds their distance, and the closed form would only add its cost.
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if !pair.bounds_apart() && segment_within_small_polygon(pair) == Some(true) {
+        if !pair.bounding_disks_apart() && segment_within_small_polygon(pair) == Some(true) {
             return None;
         }
         let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -594,6 +598,10 @@ impl<R: Real, P> Gjk<R, P> {
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if pair.inner_disks_overlap() {
             return Detection { intersecting: true, iterations: 0, status: Status::Converged };
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if self.config.detect_epsilon() == R::ZERO && pair.bounding_disks_apart() {
+            return Detection { intersecting: false, iterations: 0, status: Status::Converged };
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO {

@@ -492,26 +492,48 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         // side by side.
         let reach = a + b + R::TWO * a.sqrt() * b.sqrt();
         // The computed `centers` is off the exact one by at most 8 eps
-        // times these sizes: the exact square is then within 64 eps of
-        // the computed one, plus eps times the sizes' square.
-        let size = V2::<R>::from_glam(self.a.center()).l1()
-            + V2::<R>::from_glam(self.b.center()).l1()
-            + self.reference_a.l1()
-            + V2::<R>::from_glam(self.b.reference_point()).l1()
-            + self.offset.l1();
+        // times this size: the exact square is then within 64 eps of the
+        // computed one, plus 16 eps of the size's square.
+        let size = self.centers_size();
         let eps = R::EPSILON;
         self.centers.length_squared() * (R::ONE + R::from_u32(64) * eps) + R::from_u32(16) * eps * size * size
             < reach * (R::ONE - R::from_u32(8) * eps)
     }
 
-    /// Whether the shapes' bounding circles (about their centers) are
-    /// apart by more than rounding: then so are the shapes.
+    /// Whether the shapes' bounding disks
+    /// ([`SupportMap::bounding_radius`]) are apart by more than the
+    /// placement's rounding: then so are the shapes, and the intersection
+    /// test answers before any support (pairs a broad phase passes on whose
+    /// boxes overlap, and their disks do not). Where the types are not
+    /// known when the program is compiled, never, as
+    /// [`inner_disks_overlap`](Self::inner_disks_overlap).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    pub fn bounds_apart(&self) -> bool {
-        let (radius_a, radius_b) = self.bounding_radii();
-        let reach = radius_a + radius_b;
-        self.centers.length_squared() > reach * reach * (R::ONE + R::from_u32(16) * R::EPSILON)
+    pub fn bounding_disks_apart(&self) -> bool {
+        if !Self::shapes_known() || self.point_cores() {
+            return false;
+        }
+        let (a, b) = self.bounding_radii();
+        // Each radius is within a few eps of the exact bound it rounds.
+        let eps = R::EPSILON;
+        let reach = (a + b) * (R::ONE + R::from_u32(8) * eps);
+        // The exact square of the centers' distance is at least this, as
+        // in `inner_disks_overlap`.
+        let size = self.centers_size();
+        self.centers.length_squared() * (R::ONE - R::from_u32(64) * eps) - R::from_u32(16) * eps * size * size
+            > reach * reach
+    }
+
+    /// The size of what the centers' vector is computed from, which bounds
+    /// its rounding: at most 8 eps times this.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn centers_size(&self) -> R {
+        V2::<R>::from_glam(self.a.center()).l1()
+            + V2::<R>::from_glam(self.b.center()).l1()
+            + self.reference_a.l1()
+            + V2::<R>::from_glam(self.b.reference_point()).l1()
+            + self.offset.l1()
     }
 
     /// The size of the pair's coordinates in its frame, for margins of

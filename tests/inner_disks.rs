@@ -1,15 +1,23 @@
 //! On hosts, the intersection test and the distance query call two shapes
 //! overlapping, before asking any support, where the disks each contains
-//! about its center overlap (`SupportMap::inner_radius_squared`). Checked
+//! about its center overlap (`SupportMap::inner_radius_squared`); and the
+//! intersection test calls them apart where the disks about their centers
+//! that contain them (`SupportMap::bounding_radius`) are apart. Checked
 //! here against exact arithmetic:
 //!
-//! - a polygon's disk is never larger than the exact distance from its
-//!   center to its nearest edge line, and for all but slivers it is that
-//!   distance to within 0.1% (else the test would never be taken);
-//! - the disks decide a pair (no iteration) only where the exact shapes
-//!   overlap or touch: squares face to face and circles against a
+//! - a polygon's inner disk is never larger than the exact distance from
+//!   its center to its nearest edge line, and for all but slivers it is
+//!   that distance to within 0.1% (else the test would never be taken);
+//!   its bounding radius falls short of the exact one by no more than the
+//!   margin the test allows for it;
+//! - the inner disks decide a pair (no iteration) only where the exact
+//!   shapes overlap or touch: squares face to face and circles against a
 //!   polygon's nearest edge, with gaps of a few eps either way, rotated and
-//!   far from the origin, where the disks touch where the shapes do.
+//!   far from the origin, where the disks touch where the shapes do;
+//! - the bounding disks decide a pair only where the exact shapes are
+//!   apart: squares and boxes corner to corner along their diagonal,
+//!   circles against a polygon's farthest vertex, capsules end to corner,
+//!   where the disks touch where the shapes do.
 
 #[path = "common/rng.rs"]
 mod rng;
@@ -134,12 +142,12 @@ fn disks_are_below_the_exact_ones_f64() {
     disks_are_below_the_exact_ones::<f64>();
 }
 
-/// Places B's center at `gap` (a fraction) beyond the sum of the two disks'
-/// exact radii from A's, along `along` (a unit vector of A's frame), both
-/// turned by `turn` and A at `origin`; where the intersection test took no
-/// iteration (the disks decided), the distance query must call the pair
-/// overlapping too, and the exact shapes must overlap or touch. Returns
-/// whether the disks decided.
+/// Places B's center at `gap` (a fraction) beyond `reach` (the sum of the
+/// two disks' exact radii) from A's, along `along` (a unit vector of A's
+/// frame), both turned by `turn` and A at `origin`. Where the intersection
+/// test took no iteration (the disks decided), the exact shapes must agree
+/// with its verdict, and where it found them overlapping the distance
+/// query must too. Returns the verdict where the disks decided.
 #[allow(clippy::too_many_arguments)]
 fn placed_pair<R: Real, A: SupportMap<R>, B: SupportMap<R>>(
     (a, exact_a): (&A, &Shape),
@@ -149,7 +157,7 @@ fn placed_pair<R: Real, A: SupportMap<R>, B: SupportMap<R>>(
     gap: f64,
     turn: f64,
     origin: [f64; 2],
-) -> bool {
+) -> Option<bool> {
     let gjk = Gjk::<R>::new();
     let (c, s) = (turn.cos(), turn.sin());
     let d = reach * (1.0 + gap);
@@ -170,7 +178,7 @@ fn placed_pair<R: Real, A: SupportMap<R>, B: SupportMap<R>>(
     let detection = gjk.intersects(a, &ta, b, &tb);
     let apart = gjk.distance(a, &ta, b, &tb);
     if detection.iterations != 0 {
-        return false;
+        return None;
     }
     let placed = |shape: &Shape, t: &Transform<R>| {
         let o = pt::<R>(t.translation());
@@ -178,14 +186,15 @@ fn placed_pair<R: Real, A: SupportMap<R>, B: SupportMap<R>>(
     };
     let exact = pair(&placed(exact_a, &ta), &placed(exact_b, &tb));
     let ctx = format!("reach {reach:e} gap {gap:e} turn {turn} origin {origin:?}");
-    assert!(detection.intersecting, "{ctx}: decided with no iteration, yet apart");
-    assert!(apart.is_none(), "{ctx}: the disks overlap, yet the distance query found the shapes apart");
-    assert!(
-        exact.touching_or_overlapping,
-        "{ctx}: the disks called it, the exact shapes are {:e} apart",
+    assert_eq!(
+        detection.intersecting, exact.touching_or_overlapping,
+        "{ctx}: decided with no iteration; the exact shapes are {:e} apart",
         exact.distance
     );
-    true
+    if detection.intersecting {
+        assert!(apart.is_none(), "{ctx}: the disks overlap, yet the distance query found the shapes apart");
+    }
+    Some(detection.intersecting)
 }
 
 /// The polygon as the oracle takes it, in local coordinates (exact here:
@@ -194,21 +203,28 @@ fn exact_polygon<R: Real>(p: &Polygon<R, 64>) -> Shape {
     Shape::Polygon((0..p.len()).map(|i| pt::<R>(p.vertex(i).expect("in range"))).collect())
 }
 
-fn disks_decide_only_overlapping_pairs<R: Real>() {
-    let mut rng = Rng(0xd15c + R::EPSILON.to_f64().to_bits());
+/// A case's placement: its scale, A's origin (near or far), the turn of
+/// both shapes, and the gap (a fraction of the disks' reach): a few eps
+/// either way, none, and 1e-3.
+fn placement<R: Real>(rng: &mut Rng, case: usize) -> (f64, [f64; 2], f64, f64) {
     let eps = R::EPSILON.to_f64();
     let gaps = [-1e-3, -16.0 * eps, -4.0 * eps, -eps, 0.0, eps, 2.0 * eps, 4.0 * eps, 16.0 * eps, 64.0 * eps, 1e-3];
+    let scale = 2f64.powi(rng.range(-20.0, 20.0) as i32);
+    let origin = if case % 2 == 0 { [3e4 * scale, -2e4 * scale] } else { [0.0, 0.0] };
+    let turn = if case % 3 == 0 { 0.0 } else { rng.range(0.0, std::f64::consts::TAU) };
+    (scale, origin, turn, gaps[case % gaps.len()])
+}
+
+fn disks_decide_only_overlapping_pairs<R: Real>() {
+    let mut rng = Rng(0xd15c + R::EPSILON.to_f64().to_bits());
     let mut decided = 0;
     for case in 0..600 {
-        let scale = 2f64.powi(rng.range(-20.0, 20.0) as i32);
-        let origin = if case % 2 == 0 { [3e4 * scale, -2e4 * scale] } else { [0.0, 0.0] };
-        let turn = if case % 3 == 0 { 0.0 } else { rng.range(0.0, std::f64::consts::TAU) };
-        let gap = gaps[case % gaps.len()];
+        let (scale, origin, turn, gap) = placement::<R>(&mut rng, case);
         // Two squares face to face: their disks touch where their faces do.
         let (ha, hb) = (round::<R>(scale * rng.range(0.5, 1.0)), round::<R>(scale * rng.range(0.5, 1.0)));
         let square = |h: f64| polygon::<R>(&[[-h, -h], [h, -h], [h, h], [-h, h]]).expect("a square");
         let (sa, sb) = (square(ha), square(hb));
-        decided += placed_pair::<R, _, _>(
+        decided += (placed_pair::<R, _, _>(
             (&sa, &exact_polygon(&sa)),
             (&sb, &exact_polygon(&sb)),
             ha + hb,
@@ -216,13 +232,13 @@ fn disks_decide_only_overlapping_pairs<R: Real>() {
             gap,
             turn,
             origin,
-        ) as u32;
+        ) == Some(true)) as u32;
         let (ra, rb) = (
             Rectangle::new(R::from_f64(2.0 * ha), R::from_f64(3.0 * ha)).expect("a box"),
             Rectangle::new(R::from_f64(2.0 * hb), R::from_f64(2.0 * hb)).expect("a box"),
         );
         let boxed = |h: [f64; 2]| Shape::Polygon(vec![[-h[0], -h[1]], [h[0], -h[1]], [h[0], h[1]], [-h[0], h[1]]]);
-        decided += placed_pair::<R, _, _>(
+        decided += (placed_pair::<R, _, _>(
             (&ra, &boxed([ha, 1.5 * ha])),
             (&rb, &boxed([hb, hb])),
             ha + hb,
@@ -230,7 +246,7 @@ fn disks_decide_only_overlapping_pairs<R: Real>() {
             gap,
             turn,
             origin,
-        ) as u32;
+        ) == Some(true)) as u32;
         // A circle against a polygon's nearest edge.
         let aspect = rng.range(0.3, 1.0);
         let points = ellipse_polygon::<R>(&mut rng, 3 + case % 30, scale, aspect, [0.0, 0.0]);
@@ -240,7 +256,7 @@ fn disks_decide_only_overlapping_pairs<R: Real>() {
         let circle = Circle::new(R::from_f64(r)).expect("a circle");
         let exact_circle = Shape::Circle { center: [0.0, 0.0], radius: r };
         let reach = exact_f64(&inner).sqrt() + r;
-        decided += placed_pair::<R, _, _>(
+        decided += (placed_pair::<R, _, _>(
             (&p, &exact_polygon(&p)),
             (&circle, &exact_circle),
             reach,
@@ -248,9 +264,9 @@ fn disks_decide_only_overlapping_pairs<R: Real>() {
             gap,
             turn,
             origin,
-        ) as u32;
+        ) == Some(true)) as u32;
         let facing = [-normal[0], -normal[1]];
-        decided += placed_pair::<R, _, _>(
+        decided += (placed_pair::<R, _, _>(
             (&circle, &exact_circle),
             (&p, &exact_polygon(&p)),
             reach,
@@ -258,7 +274,7 @@ fn disks_decide_only_overlapping_pairs<R: Real>() {
             gap,
             turn,
             origin,
-        ) as u32;
+        ) == Some(true)) as u32;
     }
     assert!(decided > 300, "only {decided} pairs decided by their disks");
 }
@@ -271,4 +287,160 @@ fn disks_decide_only_overlapping_pairs_f32() {
 #[test]
 fn disks_decide_only_overlapping_pairs_f64() {
     disks_decide_only_overlapping_pairs::<f64>();
+}
+
+/// Whether `bound` (a bounding radius), with the 4 eps the pair's test
+/// allows each radius, covers `exact_square` (the exact square of the
+/// farthest distance from the center) plus `radius` beyond it.
+fn covers<R: Real>(bound: f64, exact_square: &Q, radius: f64) -> bool {
+    let reach = q(bound) * q(1.0 + 4.0 * R::EPSILON.to_f64()) - q(radius);
+    reach >= q(0.0) && exact_square <= &(&reach * &reach)
+}
+
+/// The exact square of the farthest distance from the polygon's center to
+/// a vertex as the polygon stores it (as `exact_inner`), and the unit
+/// direction to that vertex (rounded).
+fn exact_outer<R: Real>(p: &Polygon<R, 64>, points: &[[f64; 2]]) -> (Q, [f64; 2]) {
+    let reference = pt::<R>(p.reference_point());
+    let c = pt::<R>(p.center());
+    let mut farthest = (q(0.0), [0.0, 0.0]);
+    for v in points {
+        let d = [q(round::<R>(v[0] - reference[0])) - q(c[0]), q(round::<R>(v[1] - reference[1])) - q(c[1])];
+        let d2 = &d[0] * &d[0] + &d[1] * &d[1];
+        if d2 > farthest.0 {
+            let (x, y) = (exact_f64(&d[0]), exact_f64(&d[1]));
+            let len = x.hypot(y);
+            farthest = (d2, [x / len, y / len]);
+        }
+    }
+    farthest
+}
+
+fn bounding_radii_cover_the_exact_ones<R: Real>() {
+    let mut rng = Rng(0xb0d5 + R::EPSILON.to_f64().to_bits());
+    let (mut checked, mut tight) = (0, 0);
+    for case in 0..3000 {
+        let n = 3 + case % 62;
+        let aspect = [1.0, 0.7, 0.3, 1e-2, 1e-3][case % 5];
+        let scale = 2f64.powi(rng.range(-30.0, 30.0) as i32);
+        let origin = if case % 3 == 0 { [1e5 * scale, -7e4 * scale] } else { [0.0, 0.0] };
+        let points = ellipse_polygon::<R>(&mut rng, n, scale, aspect, origin);
+        let Some(p) = polygon::<R>(&points) else { continue };
+        let bound = p.bounding_radius().to_f64();
+        let (exact, _) = exact_outer(&p, &points);
+        assert!(
+            covers::<R>(bound, &exact, 0.0),
+            "case {case}: radius {bound:e} short of {:e}",
+            exact_f64(&exact).sqrt()
+        );
+        checked += 1;
+        tight += (q(bound) * q(bound) <= exact * q(1.001)) as u32;
+    }
+    assert!(checked > 2000, "only {checked} polygons built");
+    assert_eq!(tight, checked, "a bounding radius more than 0.1% loose");
+    for case in 0..400 {
+        let scale = 2f64.powi(rng.range(-30.0, 30.0) as i32);
+        let (w, h) = (round::<R>(scale * rng.range(0.1, 2.0)), round::<R>(scale * rng.range(0.1, 2.0)));
+        let (hw, hh) = (q(w) * q(0.5), q(h) * q(0.5));
+        let exact = &hw * &hw + &hh * &hh;
+        let rectangle = Rectangle::new(R::from_f64(w), R::from_f64(h)).expect("a box");
+        assert!(covers::<R>(rectangle.bounding_radius().to_f64(), &exact, 0.0), "case {case}: box {w:e} x {h:e}");
+        // A capsule from the origin: its core is exact, its center half
+        // of it.
+        let end = [round::<R>(scale * rng.range(-2.0, 2.0)), round::<R>(scale * rng.range(-2.0, 2.0))];
+        let r = round::<R>(scale * rng.range(0.0, 1.0));
+        let Ok(capsule) = Capsule::new(
+            R::vector(R::ZERO, R::ZERO),
+            R::vector(R::from_f64(end[0]), R::from_f64(end[1])),
+            R::from_f64(r),
+        ) else {
+            continue;
+        };
+        let half = [q(end[0]) * q(0.5), q(end[1]) * q(0.5)];
+        let exact = &half[0] * &half[0] + &half[1] * &half[1];
+        assert!(
+            covers::<R>(capsule.bounding_radius().to_f64(), &exact, r),
+            "case {case}: capsule to {end:?}, radius {r:e}"
+        );
+    }
+}
+
+#[test]
+fn bounding_radii_cover_the_exact_ones_f32() {
+    bounding_radii_cover_the_exact_ones::<f32>();
+}
+
+#[test]
+fn bounding_radii_cover_the_exact_ones_f64() {
+    bounding_radii_cover_the_exact_ones::<f64>();
+}
+
+fn bounding_disks_decide_only_separated_pairs<R: Real>() {
+    let mut rng = Rng(0xa9a7 + R::EPSILON.to_f64().to_bits());
+    let mut decided = 0;
+    for case in 0..600 {
+        let (scale, origin, turn, gap) = placement::<R>(&mut rng, case);
+        let mut count = |verdict: Option<bool>| decided += (verdict == Some(false)) as u32;
+        // Squares corner to corner along their diagonal: their bounding
+        // disks touch where their corners do.
+        let (ha, hb) = (round::<R>(scale * rng.range(0.5, 1.0)), round::<R>(scale * rng.range(0.5, 1.0)));
+        let square = |h: f64| polygon::<R>(&[[-h, -h], [h, -h], [h, h], [-h, h]]).expect("a square");
+        let (sa, sb) = (square(ha), square(hb));
+        let diagonal = [std::f64::consts::FRAC_1_SQRT_2; 2];
+        let (exact_sa, exact_sb) = (exact_polygon(&sa), exact_polygon(&sb));
+        let reach = (ha + hb) * std::f64::consts::SQRT_2;
+        count(placed_pair::<R, _, _>((&sa, &exact_sa), (&sb, &exact_sb), reach, diagonal, gap, turn, origin));
+        // Boxes of one aspect, corner to corner.
+        let k = rng.range(0.3, 1.0);
+        let (wa, wb) = (round::<R>(2.0 * ha), round::<R>(2.0 * hb));
+        let (ta, tb) = (round::<R>(wa * k), round::<R>(wb * k));
+        let boxed = |w: f64, h: f64| {
+            let (x, y) = (w * 0.5, h * 0.5);
+            (
+                Rectangle::new(R::from_f64(w), R::from_f64(h)).expect("a box"),
+                Shape::Polygon(vec![[-x, -y], [x, -y], [x, y], [-x, y]]),
+            )
+        };
+        let ((ra, exact_ra), (rb, exact_rb)) = (boxed(wa, ta), boxed(wb, tb));
+        let corner = |w: f64, h: f64| 0.5 * w.hypot(h);
+        let along = [wa / (2.0 * corner(wa, ta)), ta / (2.0 * corner(wa, ta))];
+        let reach = corner(wa, ta) + corner(wb, tb);
+        count(placed_pair::<R, _, _>((&ra, &exact_ra), (&rb, &exact_rb), reach, along, gap, turn, origin));
+        // A capsule along the diagonal, its end against a square's corner.
+        let l = round::<R>(scale * rng.range(0.2, 1.0));
+        let rc = round::<R>(scale * rng.range(0.1, 0.5));
+        let capsule = Capsule::new(
+            R::vector(R::from_f64(-l), R::from_f64(-l)),
+            R::vector(R::from_f64(l), R::from_f64(l)),
+            R::from_f64(rc),
+        )
+        .expect("a capsule");
+        let exact_capsule = Shape::Capsule { a: [-l, -l], b: [l, l], radius: rc };
+        let reach = l * std::f64::consts::SQRT_2 + rc + hb * std::f64::consts::SQRT_2;
+        count(placed_pair::<R, _, _>((&capsule, &exact_capsule), (&sb, &exact_sb), reach, diagonal, gap, turn, origin));
+        // A circle against a polygon's farthest vertex, as A and as B.
+        let aspect = rng.range(0.3, 1.0);
+        let points = ellipse_polygon::<R>(&mut rng, 3 + case % 30, scale, aspect, [0.0, 0.0]);
+        let Some(p) = polygon::<R>(&points) else { continue };
+        let (outer, toward) = exact_outer(&p, &points);
+        let r = round::<R>(scale * rng.range(0.2, 1.0));
+        let circle = Circle::new(R::from_f64(r)).expect("a circle");
+        let exact_circle = Shape::Circle { center: [0.0, 0.0], radius: r };
+        let exact_p = exact_polygon(&p);
+        let reach = exact_f64(&outer).sqrt() + r;
+        count(placed_pair::<R, _, _>((&p, &exact_p), (&circle, &exact_circle), reach, toward, gap, turn, origin));
+        let away = [-toward[0], -toward[1]];
+        count(placed_pair::<R, _, _>((&circle, &exact_circle), (&p, &exact_p), reach, away, gap, turn, origin));
+    }
+    assert!(decided > 200, "only {decided} pairs decided apart by their bounding disks");
+}
+
+#[test]
+fn bounding_disks_decide_only_separated_pairs_f32() {
+    bounding_disks_decide_only_separated_pairs::<f32>();
+}
+
+#[test]
+fn bounding_disks_decide_only_separated_pairs_f64() {
+    bounding_disks_decide_only_separated_pairs::<f64>();
 }

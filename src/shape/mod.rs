@@ -111,7 +111,10 @@ pub trait SupportMap<R: Real> {
     fn center(&self) -> R::Vector;
 
     /// An upper bound of the distance from `center` to any point of the
-    /// shape, radius included. Relative tolerances are measured against it.
+    /// shape, radius included. Relative tolerances are measured against it,
+    /// and on hosts the intersection test calls two shapes apart, with no
+    /// support, where these disks are: it must not fall short of the true
+    /// bound by more than rounding (an eps or two).
     fn bounding_radius(&self) -> R;
 
     /// The radius the core is swept by. Zero for sharp shapes.
