@@ -472,7 +472,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         self.rotated.then_some((self.cos, self.sin))
     }
 
-    /// Whether the disks the shapes contain about their centers
+    /// Whether the disks the shapes contain about their cores
     /// ([`SupportMap::inner_radius_squared`]) overlap by more than the
     /// placement's rounding: then so do the shapes. Where the types are
     /// not known when the program is compiled, never: trait objects keep
@@ -491,49 +491,74 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         // Each root apart: their product cannot overflow, and the two run
         // side by side.
         let reach = a + b + R::TWO * a.sqrt() * b.sqrt();
-        // The computed `centers` is off the exact one by at most 8 eps
-        // times this size: the exact square is then within 64 eps of the
-        // computed one, plus 16 eps of the size's square.
-        let size = self.centers_size();
-        let eps = R::EPSILON;
-        self.centers.length_squared() * (R::ONE + R::from_u32(64) * eps) + R::from_u32(16) * eps * size * size
-            < reach * (R::ONE - R::from_u32(8) * eps)
+        let (gap, margin) = self.cores_gap_squared();
+        gap * (R::ONE + R::from_u32(64) * R::EPSILON) + margin < reach * (R::ONE - R::from_u32(8) * R::EPSILON)
     }
 
-    /// Whether the shapes' bounding disks
-    /// ([`SupportMap::bounding_radius`]) are apart by more than the
-    /// placement's rounding: then so are the shapes, and the intersection
-    /// test answers before any support (pairs a broad phase passes on whose
-    /// boxes overlap, and their disks do not). Where the types are not
-    /// known when the program is compiled, never, as
-    /// [`inner_disks_overlap`](Self::inner_disks_overlap).
+    /// Whether the disks about the shapes' cores that hold them
+    /// ([`SupportMap::bounding_radius`], or a capsule's radius about its
+    /// segment) are apart by more than the placement's rounding: then so
+    /// are the shapes, and the intersection test answers before any
+    /// support (pairs a broad phase passes on whose boxes overlap, and
+    /// their disks do not). Where the types are not known when the program
+    /// is compiled, never, as [`inner_disks_overlap`](Self::inner_disks_overlap).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn bounding_disks_apart(&self) -> bool {
         if !Self::shapes_known() || self.point_cores() {
             return false;
         }
-        let (a, b) = self.bounding_radii();
+        let segment = self.core_segment();
+        let (a, b) = match segment {
+            Some((_, true)) => (self.a.radius(), self.b.bounding_radius()),
+            Some((_, false)) => (self.a.bounding_radius(), self.b.radius()),
+            None => self.bounding_radii(),
+        };
         // Each radius is within a few eps of the exact bound it rounds.
-        let eps = R::EPSILON;
-        let reach = (a + b) * (R::ONE + R::from_u32(8) * eps);
-        // The exact square of the centers' distance is at least this, as
-        // in `inner_disks_overlap`.
-        let size = self.centers_size();
-        self.centers.length_squared() * (R::ONE - R::from_u32(64) * eps) - R::from_u32(16) * eps * size * size
-            > reach * reach
+        let reach = (a + b) * (R::ONE + R::from_u32(8) * R::EPSILON);
+        let (gap, margin) = self.cores_gap_squared();
+        gap * (R::ONE - R::from_u32(64) * R::EPSILON) - margin > reach * reach
     }
 
-    /// The size of what the centers' vector is computed from, which bounds
-    /// its rounding: at most 8 eps times this.
+    /// Half of the segment a capsule (or a segment) is swept about, in the
+    /// pair frame, about its center, and whether it is A's; `None` unless
+    /// exactly one shape has one. Its disks reach along the segment, where
+    /// one about its center would be only its radius.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    fn centers_size(&self) -> R {
-        V2::<R>::from_glam(self.a.center()).l1()
+    fn core_segment(&self) -> Option<(V2<R>, bool)> {
+        match (self.a.segment_core(), self.b.segment_core()) {
+            (Some(s), None) => Some(((s[1] - s[0]) * R::HALF, true)),
+            (None, Some(s)) => Some((self.rotate((s[1] - s[0]) * R::HALF), false)),
+            _ => None,
+        }
+    }
+
+    /// The square of the distance between the shapes' cores (their
+    /// centers, or one center and the other's [`core_segment`](Self::core_segment)),
+    /// and what the exact square may exceed or fall short of it by beyond
+    /// 64 eps of it. The computed `centers` is off the exact one by at most
+    /// 8 eps of the size it is computed from, the nearest point of a
+    /// segment by as much again: the exact square is then within 64 eps of
+    /// the computed one, plus 64 eps of the size's square.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn cores_gap_squared(&self) -> (R, R) {
+        let size = V2::<R>::from_glam(self.a.center()).l1()
             + V2::<R>::from_glam(self.b.center()).l1()
             + self.reference_a.l1()
             + V2::<R>::from_glam(self.b.reference_point()).l1()
-            + self.offset.l1()
+            + self.offset.l1();
+        let margin = R::from_u32(64) * R::EPSILON * size * size;
+        let Some((half, _)) = self.core_segment() else {
+            return (self.centers.length_squared(), margin);
+        };
+        // The segment is symmetric about its center: the nearest point to
+        // `centers` or to `-centers` is as far.
+        let length2 = half.length_squared();
+        let along = if length2 > R::ZERO { self.centers.dot(half) / length2 } else { R::ZERO };
+        let along = along.max(-R::ONE).min(R::ONE);
+        ((self.centers - half * along).length_squared(), margin)
     }
 
     /// The size of the pair's coordinates in its frame, for margins of

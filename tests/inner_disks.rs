@@ -17,7 +17,10 @@
 //! - the bounding disks decide a pair only where the exact shapes are
 //!   apart: squares and boxes corner to corner along their diagonal,
 //!   circles against a polygon's farthest vertex, capsules end to corner,
-//!   where the disks touch where the shapes do.
+//!   where the disks touch where the shapes do;
+//! - a capsule's disks are about its segment: its side against a polygon's
+//!   nearest edge (inner) or farthest vertex (bounding), and against a
+//!   circle, decide only pairs that overlap, or are apart, exactly.
 
 #[path = "common/rng.rs"]
 mod rng;
@@ -197,6 +200,22 @@ fn placed_pair<R: Real, A: SupportMap<R>, B: SupportMap<R>>(
     Some(detection.intersecting)
 }
 
+/// [`placed_pair`] both ways round: B placed along `along` from A, and A
+/// along its opposite from B; `at` is the gap, the turn and the origin.
+fn both_ways<R: Real, A: SupportMap<R>, B: SupportMap<R>>(
+    a: (&A, &Shape),
+    b: (&B, &Shape),
+    reach: f64,
+    along: [f64; 2],
+    (gap, turn, origin): (f64, f64, [f64; 2]),
+) -> [Option<bool>; 2] {
+    let away = [-along[0], -along[1]];
+    [
+        placed_pair::<R, _, _>(a, b, reach, along, gap, turn, origin),
+        placed_pair::<R, _, _>(b, a, reach, away, gap, turn, origin),
+    ]
+}
+
 /// The polygon as the oracle takes it, in local coordinates (exact here:
 /// these polygons are about the origin).
 fn exact_polygon<R: Real>(p: &Polygon<R, 64>) -> Shape {
@@ -210,9 +229,20 @@ fn placement<R: Real>(rng: &mut Rng, case: usize) -> (f64, [f64; 2], f64, f64) {
     let eps = R::EPSILON.to_f64();
     let gaps = [-1e-3, -16.0 * eps, -4.0 * eps, -eps, 0.0, eps, 2.0 * eps, 4.0 * eps, 16.0 * eps, 64.0 * eps, 1e-3];
     let scale = 2f64.powi(rng.range(-20.0, 20.0) as i32);
-    let origin = if case % 2 == 0 { [3e4 * scale, -2e4 * scale] } else { [0.0, 0.0] };
-    let turn = if case % 3 == 0 { 0.0 } else { rng.range(0.0, std::f64::consts::TAU) };
+    let origin = if case.is_multiple_of(2) { [3e4 * scale, -2e4 * scale] } else { [0.0, 0.0] };
+    let turn = if case.is_multiple_of(3) { 0.0 } else { rng.range(0.0, std::f64::consts::TAU) };
     (scale, origin, turn, gaps[case % gaps.len()])
+}
+
+/// A capsule whose segment, of half length `half`, lies across `along` (a
+/// unit vector) through its center: placed along `along`, its side faces
+/// the other shape. Its ends are each other's negatives, so its center is
+/// the origin exactly.
+fn capsule_across<R: Real>(along: [f64; 2], half: f64, radius: f64) -> (Capsule<R>, Shape) {
+    let end = [round::<R>(-half * along[1]), round::<R>(half * along[0])];
+    let v = |p: [f64; 2]| R::vector(R::from_f64(p[0]), R::from_f64(p[1]));
+    let capsule = Capsule::new(v([-end[0], -end[1]]), v(end), R::from_f64(radius)).expect("a capsule");
+    (capsule, Shape::Capsule { a: [-end[0], -end[1]], b: end, radius })
 }
 
 fn disks_decide_only_overlapping_pairs<R: Real>() {
@@ -275,8 +305,17 @@ fn disks_decide_only_overlapping_pairs<R: Real>() {
             turn,
             origin,
         ) == Some(true)) as u32;
+        // A capsule's side against the polygon's nearest edge, and against
+        // a circle: its disk reaches along its whole segment.
+        let (capsule, exact_capsule) = capsule_across::<R>(normal, round::<R>(scale * rng.range(0.1, 2.0)), r);
+        let exact_p = exact_polygon(&p);
+        let at = (gap, turn, origin);
+        let verdicts = both_ways::<R, _, _>((&p, &exact_p), (&capsule, &exact_capsule), reach, normal, at)
+            .into_iter()
+            .chain(both_ways::<R, _, _>((&circle, &exact_circle), (&capsule, &exact_capsule), 2.0 * r, normal, at));
+        decided += verdicts.filter(|v| *v == Some(true)).count() as u32;
     }
-    assert!(decided > 300, "only {decided} pairs decided by their disks");
+    assert!(decided > 600, "only {decided} pairs decided by their disks");
 }
 
 #[test]
@@ -431,6 +470,14 @@ fn bounding_disks_decide_only_separated_pairs<R: Real>() {
         count(placed_pair::<R, _, _>((&p, &exact_p), (&circle, &exact_circle), reach, toward, gap, turn, origin));
         let away = [-toward[0], -toward[1]];
         count(placed_pair::<R, _, _>((&circle, &exact_circle), (&p, &exact_p), reach, away, gap, turn, origin));
+        // A capsule's side against the polygon's farthest vertex, and
+        // against a circle: its bounding disk is about its segment.
+        let (capsule, exact_capsule) = capsule_across::<R>(toward, round::<R>(scale * rng.range(0.1, 2.0)), r);
+        let at = (gap, turn, origin);
+        let verdicts = both_ways::<R, _, _>((&p, &exact_p), (&capsule, &exact_capsule), reach, toward, at)
+            .into_iter()
+            .chain(both_ways::<R, _, _>((&circle, &exact_circle), (&capsule, &exact_capsule), 2.0 * r, toward, at));
+        verdicts.for_each(&mut count);
     }
     assert!(decided > 200, "only {decided} pairs decided apart by their bounding disks");
 }

@@ -248,8 +248,9 @@ pub trait SupportMap<R: Real> {
     }
 
     /// The square of a radius, rounded down, within which every point about
-    /// [`center`](Self::center) belongs to the shape: where two such disks
-    /// overlap, so do the shapes, and the intersection test and the
+    /// [`center`](Self::center) (or about the whole of a
+    /// [`segment_core`](Self::segment_core)) belongs to the shape: where two
+    /// such disks overlap, so do the shapes, and the intersection test and the
     /// distance query answer before any support (most deeply overlapping
     /// pairs in a scene). Zero, the default, claims no disk. Hosts only, as
     /// [`small_polygon`](Self::small_polygon).
