@@ -28,8 +28,8 @@ macro_rules! checks {
             /// A length (radius, extent) must be finite, positive and within
             /// [`Real::MAX_COORDINATE`].
             ///
-            /// Not inlined on bare metal: a firmware with every shape calls
-            /// it from a dozen constructors.
+            /// Not inlined on bare metal, whose flash is scarce: a firmware
+            /// with every shape calls it from a dozen constructors.
             #[cfg_attr(target_os = "none", inline(never))]
             pub(crate) const fn check_length(r: $R) -> Result<$R, Error> {
                 if !r.is_finite() {

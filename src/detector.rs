@@ -1029,7 +1029,7 @@ fn nearest<R: Real>(
 
 /// `f()` in a frame of its own on bare metal, so that a query that asks
 /// several (the cast, the manifold) never holds two of their working sets
-/// at once.
+/// at once on a microcontroller's small stack.
 #[cfg_attr(target_os = "none", inline(never))]
 fn in_own_frame<T>(f: impl FnOnce() -> T) -> T {
     f()
@@ -1329,7 +1329,7 @@ enum Proximity<R: Real> {
 /// GJK for the penetration query, with the closed form for rounded shapes
 /// whose cores are apart. Not inlined on bare metal, and returning no
 /// simplex, so that GJK's values are gone before the solver's polytope
-/// exists.
+/// exists: a microcontroller's small stack never holds both.
 #[cfg_attr(target_os = "none", inline(never))]
 #[cfg_attr(not(target_os = "none"), inline(always))]
 fn core_proximity<R, A, B>(pair: &Pair<'_, R, A, B>, max_iterations: u32, epsilon: R) -> Proximity<R>

@@ -75,7 +75,8 @@ impl<R: Real, const N: usize> Epa<R, N> {
 impl<R: Real, const N: usize> PenetrationSolver<R> for Epa<R, N> {
     const SEPARATING_AXES: bool = true;
 
-    // Not inlined, so the polytope never shares a frame with GJK's values.
+    // Not inlined, so the polytope never shares a frame with GJK's values:
+    // a microcontroller's stack is small.
     #[inline(never)]
     fn solve<M: MinkowskiDifference<R>>(&self, difference: &M, simplex: &[SupportPoint<R>]) -> PenetrationEstimate<R> {
         // Checked when the program is compiled: a polytope with no room for

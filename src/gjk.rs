@@ -91,7 +91,8 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
         }
     }
 
-    /// Left to the compiler: one copy for several callers, inlined into one.
+    /// Left to the compiler: one copy for several callers, as scarce flash
+    /// wants, inlined into one.
     fn shared_core_distance<'s, P: Payload<R>>(
         &self,
         slot: &'s mut Option<Simplex<R, P>>,

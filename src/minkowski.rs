@@ -182,8 +182,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// The pair's size: the larger bounding radius. Asked for where it is
     /// needed, not up front: the polygon overlap test never needs it, and then
-    /// links no square root. One out-of-line copy on bare metal, where GJK
-    /// and EPA each ask for it.
+    /// links no square root. One out-of-line copy on bare metal, whose flash
+    /// is scarce, where GJK and EPA each ask for it.
     #[cfg_attr(target_os = "none", inline(never))]
     pub fn scale(&self) -> R {
         self.a.bounding_radius().max(self.b.bounding_radius())
@@ -491,7 +491,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         // Each root apart: their product cannot overflow, and the two run
         // side by side.
         let reach = a + b + R::TWO * a.sqrt() * b.sqrt();
-        let (gap, margin) = self.cores_gap_squared();
+        let (gap, margin) = self.cores_gap_squared(self.core_segment());
         gap * (R::ONE + R::from_u32(64) * R::EPSILON) + margin < reach * (R::ONE - R::from_u32(8) * R::EPSILON)
     }
 
@@ -516,7 +516,7 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         };
         // Each radius is within a few eps of the exact bound it rounds.
         let reach = (a + b) * (R::ONE + R::from_u32(8) * R::EPSILON);
-        let (gap, margin) = self.cores_gap_squared();
+        let (gap, margin) = self.cores_gap_squared(segment);
         gap * (R::ONE - R::from_u32(64) * R::EPSILON) - margin > reach * reach
     }
 
@@ -535,7 +535,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     }
 
     /// The square of the distance between the shapes' cores (their
-    /// centers, or one center and the other's [`core_segment`](Self::core_segment)),
+    /// centers, or one center and the other's `segment`, as
+    /// [`core_segment`](Self::core_segment) gives it),
     /// and what the exact square may exceed or fall short of it by beyond
     /// 64 eps of it. The computed `centers` is off the exact one by at most
     /// 8 eps of the size it is computed from, the nearest point of a
@@ -543,14 +544,14 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// the computed one, plus 64 eps of the size's square.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    fn cores_gap_squared(&self) -> (R, R) {
+    fn cores_gap_squared(&self, segment: Option<(V2<R>, bool)>) -> (R, R) {
         let size = V2::<R>::from_glam(self.a.center()).l1()
             + V2::<R>::from_glam(self.b.center()).l1()
             + self.reference_a.l1()
             + V2::<R>::from_glam(self.b.reference_point()).l1()
             + self.offset.l1();
         let margin = R::from_u32(64) * R::EPSILON * size * size;
-        let Some((half, _)) = self.core_segment() else {
+        let Some((half, _)) = segment else {
             return (self.centers.length_squared(), margin);
         };
         // The segment is symmetric about its center: the nearest point to

@@ -974,8 +974,8 @@ impl<R: Real> V2<R> {
     /// The length and the unit vector, with the care of
     /// [`try_normalize`](Self::try_normalize): one definition for both.
     ///
-    /// Not inlined on bare metal: called from a dozen places, one copy
-    /// serves them all.
+    /// Not inlined on bare metal, whose flash is scarce: called from a
+    /// dozen places, one copy serves them all.
     #[cfg_attr(target_os = "none", inline(never))]
     #[cfg_attr(not(target_os = "none"), inline)]
     pub fn try_length_and_unit(self) -> Option<(R, Self)> {

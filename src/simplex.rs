@@ -23,7 +23,8 @@ pub(crate) trait Payload<R>: Copy + Default {
     /// compute it.
     fn set_weight(&mut self, weight: R);
     /// Whether [`Simplex::solve`] is one shared copy rather than inlined
-    /// at each call (on bare metal; hosts always inline it).
+    /// at each call (on bare metal, whose flash is scarce; hosts always
+    /// inline it, for speed).
     const SHARED_SOLVE: bool;
 }
 
@@ -141,8 +142,9 @@ impl<R: Real, P: Payload<R>> Simplex<R, P> {
         }
     }
 
-    /// No inline hint on bare metal: the compiler inlines a function
-    /// called from one place, and keeps one copy for several.
+    /// No inline hint on bare metal, whose flash is scarce: the compiler
+    /// inlines a function called from one place, and keeps one copy for
+    /// several.
     #[cfg_attr(not(target_os = "none"), inline)]
     fn solve_shared(&mut self) -> Closest<R> {
         self.solve_inline()
@@ -295,7 +297,7 @@ struct Weights<R> {
 ///
 /// Only a dispatch: the geometry it calls ([`segment_foot`],
 /// [`closest_triangle_edge`]) is one out-of-line copy on bare metal, shared
-/// by every payload. The dispatch itself is left to the compiler there,
+/// by every payload, since a microcontroller's flash is scarce. The dispatch itself is left to the compiler there,
 /// which inlines it into each GJK loop, where it is smaller than a call.
 /// Hosts inline it everywhere for speed.
 #[cfg_attr(target_os = "none", inline)]
@@ -320,7 +322,7 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// boundary counts: touching).
 ///
 /// Out of line on bare metal in f32, so the GJK loop that calls it keeps a
-/// small frame; inlined where the scalar asks for flat frames (`FLAT_GJK`,
+/// small frame on a microcontroller's small stack; inlined where the scalar asks for flat frames (`FLAT_GJK`,
 /// in `real.rs`).
 #[inline(always)]
 fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
@@ -400,7 +402,7 @@ enum Foot<R> {
 /// f32), keep the nearer end: as good as rounding allows.
 ///
 /// Out of line on bare metal in f32, so the triangle's unrolled loop and
-/// the segment share one copy; inlined where the scalar asks for flat
+/// the segment share one copy of a microcontroller's scarce flash; inlined where the scalar asks for flat
 /// frames (`FLAT_GJK`, in `real.rs`) and on hosts, for speed.
 #[inline(always)]
 fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {

@@ -106,8 +106,8 @@ impl<R: Real> Transform<R> {
 
 /// A point must be finite and within [`Real::MAX_COORDINATE`].
 ///
-/// Not inlined on bare metal: shape constructors and transforms call it from
-/// many places, and one copy serves them all.
+/// Not inlined on bare metal, whose flash is scarce: shape constructors and
+/// transforms call it from many places, and one copy serves them all.
 #[cfg_attr(target_os = "none", inline(never))]
 pub(crate) fn check_point<R: Real>(p: V2<R>) -> Result<V2<R>, Error> {
     // The same check a constant polygon's vertices get at compile time.
