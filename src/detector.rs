@@ -161,12 +161,12 @@ impl<R: Real, P> Gjk<R, P> {
         B: SupportMap<R> + ?Sized,
     {
         if pair.point_cores() {
-            if let Some(ref core) = PointCores::new(pair) {
-                if core.certainly_within(pair.radius_a() + pair.radius_b()) {
-                    return None;
-                }
-                return core.separation(pair);
+            // Coincident cores overlap, as GJK's loop finds.
+            let core = &PointCores::new(pair)?;
+            if core.certainly_within(pair.radius_a() + pair.radius_b()) {
+                return None;
             }
+            return core.separation(pair);
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if pair.inner_disks_overlap() {

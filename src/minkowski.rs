@@ -231,14 +231,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// bounding radius, measured from a point of its core, is no more than
     /// its radius has no other core point: that point would put part of the
     /// shape farther out.
+    ///
+    /// Two disks ([`SupportMap::disk_radius`]) are known to be such when
+    /// the program is compiled: their queries then link none of GJK's loop.
     #[inline(always)]
     pub fn point_cores(&self) -> bool {
         cfg!(not(target_os = "none"))
             && Self::shapes_known()
-            && self.a.radius() > R::ZERO
-            && self.b.radius() > R::ZERO
-            && self.a.bounding_radius() <= self.a.radius()
-            && self.b.bounding_radius() <= self.b.radius()
+            && ((self.a.disk_radius().is_some() && self.b.disk_radius().is_some())
+                || (self.a.radius() > R::ZERO
+                    && self.b.radius() > R::ZERO
+                    && self.a.bounding_radius() <= self.a.radius()
+                    && self.b.bounding_radius() <= self.b.radius()))
     }
 
     /// Whether both shapes' types are known when the program is compiled:

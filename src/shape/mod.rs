@@ -198,7 +198,10 @@ pub trait SupportMap<R: Real> {
     /// The radius of a disk centered on [`center`](Self::center), whose
     /// rays are cast in closed form straight into the world frame, with the
     /// same arithmetic on every target and through `dyn SupportMap` alike.
-    /// `None` (the default) for every other shape.
+    /// `None` (the default) for every other shape. A shape that answers
+    /// `Some` must have [`center`](Self::center) for its whole core and that
+    /// radius for [`radius`](Self::radius): pair queries take it for a point
+    /// core without asking the radii.
     #[doc(hidden)]
     fn disk_radius(&self) -> Option<R> {
         None
