@@ -583,8 +583,11 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn aim_from_segment(&mut self) {
+        if !Self::shapes_known() {
+            return;
+        }
         let segment = self.core_segment();
-        if Self::shapes_known() && segment.is_some() {
+        if segment.is_some() {
             let offset = self.cores_offset(segment);
             if offset.length_squared() > R::ZERO {
                 self.first_direction = -offset;
