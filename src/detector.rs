@@ -150,11 +150,7 @@ impl<R: Real, P> Gjk<R, P> {
         A: SupportMap<R> + ?Sized,
         B: SupportMap<R> + ?Sized,
     {
-        #[cfg_attr(any(target_os = "none", target_family = "wasm"), allow(unused_mut))]
-        let mut pair = Pair::new(a, ta, b, tb);
-        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        pair.aim_from_segment();
-        self.distance_of(&pair)
+        self.distance_of(&Pair::new(a, ta, b, tb))
     }
 
     /// [`distance`](Self::distance) of a placed pair.

@@ -555,44 +555,15 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             + V2::<R>::from_glam(self.b.reference_point()).l1()
             + self.offset.l1();
         let margin = R::from_u32(64) * R::EPSILON * size * size;
-        (self.cores_offset(segment).length_squared(), margin)
-    }
-
-    /// From A's core to B's: from center to center, or with one end on
-    /// `segment` ([`core_segment`](Self::core_segment)) at its point
-    /// nearest the other center.
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    #[inline(always)]
-    fn cores_offset(&self, segment: Option<(V2<R>, bool)>) -> V2<R> {
         let Some((half, _)) = segment else {
-            return self.centers;
+            return (self.centers.length_squared(), margin);
         };
         // The segment is symmetric about its center: the nearest point to
         // `centers` or to `-centers` is as far.
         let length2 = half.length_squared();
         let along = if length2 > R::ZERO { self.centers.dot(half) / length2 } else { R::ZERO };
         let along = along.max(-R::ONE).min(R::ONE);
-        self.centers - half * along
-    }
-
-    /// GJK's first direction for a capsule (a segment core) against
-    /// another shape: from the segment's point nearest the other center,
-    /// where the cores' nearest points more likely lie than at the centers.
-    /// Where the types are not known when the program is compiled, never:
-    /// trait objects keep the answers firmware gives.
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    #[inline(always)]
-    pub fn aim_from_segment(&mut self) {
-        if !Self::shapes_known() {
-            return;
-        }
-        let segment = self.core_segment();
-        if segment.is_some() {
-            let offset = self.cores_offset(segment);
-            if offset.length_squared() > R::ZERO {
-                self.first_direction = -offset;
-            }
-        }
+        ((self.centers - half * along).length_squared(), margin)
     }
 
     /// The size of the pair's coordinates in its frame, for margins of
