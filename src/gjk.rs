@@ -91,8 +91,8 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'_, R, 
         }
     }
 
-    /// Left to the compiler: one copy for several callers, as scarce flash
-    /// wants, inlined into one.
+    /// No inline hint, because a microcontroller's flash is scarce: the
+    /// compiler keeps one copy for several callers and inlines it into one.
     fn shared_core_distance<'s, P: Payload<R>>(
         &self,
         slot: &'s mut Option<Simplex<R, P>>,

@@ -227,22 +227,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// (where skipping GJK's loop spares mispredicted branches; a firmware
     /// keeps its code as it is) and only where the shapes' types are known
     /// when the program is compiled: a polygon's constant zero radius then
-    /// drops the question, and trait objects never ask it. A shape whose
-    /// bounding radius, measured from a point of its core, is no more than
-    /// its radius has no other core point: that point would put part of the
-    /// shape farther out.
-    ///
-    /// Two disks ([`SupportMap::disk_radius`]) are known to be such when
-    /// the program is compiled: their queries then link none of GJK's loop.
+    /// drops the question, and trait objects never ask it.
     #[inline(always)]
     pub fn point_cores(&self) -> bool {
-        cfg!(not(target_os = "none"))
-            && Self::shapes_known()
-            && ((self.a.disk_radius().is_some() && self.b.disk_radius().is_some())
-                || (self.a.radius() > R::ZERO
-                    && self.b.radius() > R::ZERO
-                    && self.a.bounding_radius() <= self.a.radius()
-                    && self.b.bounding_radius() <= self.b.radius()))
+        cfg!(not(target_os = "none")) && Self::shapes_known() && point_core(self.a) && point_core(self.b)
     }
 
     /// Whether both shapes' types are known when the program is compiled:
@@ -441,13 +429,12 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         if !Self::shapes_known() {
             return None;
         }
-        let point_core = |radius: R, bounding: R| radius > R::ZERO && bounding <= radius;
         let (a, b): (&'s A, &'s B) = (self.a, self.b);
-        if point_core(a.radius(), a.bounding_radius()) {
+        if point_core(a) {
             let polygon = b.small_polygon()?.vertices;
             return Some((self.inverse_rotate(V2::from_glam(a.center()) - self.offset), polygon, true));
         }
-        if point_core(b.radius(), b.bounding_radius()) {
+        if point_core(b) {
             return Some((self.b_to_pair(V2::from_glam(b.center())), a.small_polygon()?.vertices, false));
         }
         None
@@ -624,6 +611,17 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn to_world_vector(&self, v: V2<R>) -> R::Vector {
         self.frame.rotate(v).to_glam()
     }
+}
+
+/// Whether a shape's core is a single point. A disk
+/// ([`SupportMap::disk_radius`]) is one by its type, so the compiler drops
+/// the question and its pairs link none of GJK's loop. Any other shape is
+/// one where its bounding radius, measured from a point of its core, is no
+/// more than its radius: another core point would put part of the shape
+/// farther out.
+#[inline(always)]
+fn point_core<R: Real, S: SupportMap<R> + ?Sized>(shape: &S) -> bool {
+    shape.disk_radius().is_some() || (shape.radius() > R::ZERO && shape.bounding_radius() <= shape.radius())
 }
 
 impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDifference<R> for Pair<'_, R, A, B> {

@@ -297,9 +297,10 @@ struct Weights<R> {
 ///
 /// Only a dispatch: the geometry it calls ([`segment_foot`],
 /// [`closest_triangle_edge`]) is one out-of-line copy on bare metal, shared
-/// by every payload, since a microcontroller's flash is scarce. The dispatch itself is left to the compiler there,
-/// which inlines it into each GJK loop, where it is smaller than a call.
-/// Hosts inline it everywhere for speed.
+/// by every payload, since a microcontroller's flash is scarce. The
+/// dispatch itself is left to the compiler there, which inlines it into
+/// each GJK loop, where it is smaller than a call. Hosts inline it
+/// everywhere for speed.
 #[cfg_attr(target_os = "none", inline)]
 #[cfg_attr(not(target_os = "none"), inline(always))]
 fn closest_face<R: Real>(w: [V2<R>; 3], len: usize) -> Face<R> {
@@ -322,8 +323,8 @@ type EdgeFoot<R> = ((usize, usize), (Foot<R>, V2<R>));
 /// boundary counts: touching).
 ///
 /// Out of line on bare metal in f32, so the GJK loop that calls it keeps a
-/// small frame on a microcontroller's small stack; inlined where the scalar asks for flat frames (`FLAT_GJK`,
-/// in `real.rs`).
+/// small frame on a microcontroller's small stack; inlined where the
+/// scalar asks for flat frames (`FLAT_GJK`, in `real.rs`).
 #[inline(always)]
 fn closest_triangle_edge<R: Real>(wa: V2<R>, wb: V2<R>, wc: V2<R>) -> Option<EdgeFoot<R>> {
     if R::FLAT_GJK {
@@ -402,8 +403,9 @@ enum Foot<R> {
 /// f32), keep the nearer end: as good as rounding allows.
 ///
 /// Out of line on bare metal in f32, so the triangle's unrolled loop and
-/// the segment share one copy of a microcontroller's scarce flash; inlined where the scalar asks for flat
-/// frames (`FLAT_GJK`, in `real.rs`) and on hosts, for speed.
+/// the segment share one copy of a microcontroller's scarce flash; inlined
+/// where the scalar asks for flat frames (`FLAT_GJK`, in `real.rs`) and on
+/// hosts, for speed.
 #[inline(always)]
 fn segment_foot<R: Real>(p: V2<R>, q: V2<R>) -> (Foot<R>, V2<R>) {
     if R::FLAT_GJK {
