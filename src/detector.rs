@@ -596,18 +596,18 @@ impl<R: Real, P> Gjk<R, P> {
     {
         let mut pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if self.config.detect_epsilon() == R::ZERO {
+            if let Some((pa, pb)) = pair.small_polygons() {
+                return cache.intersects_small(&pair, pa, pb);
+            }
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if pair.inner_disks_overlap() {
             return Detection { intersecting: true, iterations: 0, status: Status::Converged };
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO && pair.bounding_disks_apart() {
             return Detection { intersecting: false, iterations: 0, status: Status::Converged };
-        }
-        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if self.config.detect_epsilon() == R::ZERO {
-            if let Some((pa, pb)) = pair.small_polygons() {
-                return cache.intersects_small(&pair, pa, pb);
-            }
         }
         if let Some(d) = cache.first_direction() {
             pair.first_direction = d;
@@ -638,18 +638,12 @@ impl<R: Real, P> Gjk<R, P> {
         let pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
-            if pair.inner_disks_overlap() {
-                return None;
-            }
-            // The cold query's verdict first, as it takes it (from the
-            // cached axis or triangle where either still decides).
-            if cache.intersects_small(&pair, pa, pb).intersecting {
-                return None;
-            }
-            // Apart, and the cached axis separates them: where its edge and
-            // nearest vertex are still the closest features, the distance.
-            if let Some(found) = cache.face_and_vertex(&pair, pa, pb) {
-                return Some(closed_form_separation(&pair, found));
+            // Overlapping or apart as the cold query says; apart, from the
+            // cached axis where it still gives the distance.
+            match cache.face_and_vertex(&pair, pa, pb) {
+                None => return None,
+                Some(Some(found)) => return Some(closed_form_separation(&pair, found)),
+                Some(None) => {}
             }
             let start = cache.simplex(&pair, pa, pb);
             let mut simplex = None::<Simplex<R, Witness<R>>>;
@@ -717,11 +711,18 @@ impl<R: Real, P> Gjk<R, P> {
         P: PenetrationSolver<R>,
     {
         self.manifold_by(a, ta, b, tb, margin, || {
-            // Two small polygons: the cached penetration first, which says
-            // whether they overlap as the distance query would (by their
-            // axes) and, where they do, is all the manifold needs.
+            // Two small polygons: both queries say whether they overlap as
+            // the cold ones do (by their axes). The one the cache expects
+            // first: the distance where it holds a separating axis (which
+            // then decides and measures in one pass), else the penetration.
             #[cfg(not(any(target_os = "none", target_family = "wasm")))]
             if P::SEPARATING_AXES && Pair::new(a, ta, b, tb).small_polygons().is_some() {
+                if cache.expects_apart() {
+                    if let Some(s) = self.distance_cached(a, ta, b, tb, cache) {
+                        return Some(apart(s));
+                    }
+                    return self.penetration_cached(a, ta, b, tb, cache).map(overlapping);
+                }
                 return match self.penetration_cached(a, ta, b, tb, cache) {
                     Some(p) => Some(overlapping(p)),
                     None => self.distance_cached(a, ta, b, tb, cache).map(apart),

@@ -250,19 +250,26 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    let least = |v: &[V2<R>], d: V2<R>| v.iter().fold(R::INFINITY, |m, &p| m.min(d.dot(p)));
-    let offset = pair.pose().2;
-    let reach = if slot < M {
-        let Some((p, q)) = edge_ends(a, slot) else { return false };
-        let n = (q - p).perp_cw();
-        (n, least(b, pair.pair_vector_to_b(n)) + n.dot(offset) - n.dot(p))
-    } else {
-        let Some((p, q)) = edge_ends(b, slot - M) else { return false };
-        let n = (q - p).perp_cw();
-        let m = pair.b_vector_to_pair(n);
-        (n, least(a, m) - n.dot(p) - m.dot(offset))
+    // Which polygon owns the edge is a coin toss from pair to pair: both
+    // ways are computed and one picked, not branched on.
+    let own_is_a = slot < M;
+    let (own, other) = core::hint::select_unpredictable(own_is_a, (a, b), (b, a));
+    let Some((p, q)) = edge_ends(own, core::hint::select_unpredictable(own_is_a, slot, slot.wrapping_sub(M))) else {
+        return false;
     };
-    reach.1 > margin * (reach.0.x.abs() + reach.0.y.abs())
+    let n = (q - p).perp_cw();
+    // The normal in the other polygon's frame, and the offset of B's
+    // reference from A's seen along the normal from the edge's side.
+    let (to_b, to_pair) = (pair.pair_vector_to_b(n), pair.b_vector_to_pair(n));
+    let offset = pair.pose().2;
+    let (d, along_offset) =
+        core::hint::select_unpredictable(own_is_a, (to_b, n.dot(offset)), (to_pair, R::ZERO - to_pair.dot(offset)));
+    // Padded with the first vertex, which leaves the minimum as it is: a
+    // tree of minima over fixed lanes, not a chain over the slice.
+    let first = other.first().copied().unwrap_or_default();
+    let v: [V2<R>; M] = core::array::from_fn(|i| other.get(i).copied().unwrap_or(first));
+    let reach = least_dot(d, &v.map(|p| p.x), &v.map(|p| p.y)) + along_offset - n.dot(p);
+    reach > margin * n.l1()
 }
 
 /// Where vertex `v` lies beyond the edge from `p` to `q` (outward normal
@@ -340,12 +347,17 @@ fn padded<R: Real>(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>) -> [V2<R>
 
 /// [`face_and_vertex_placed`], measured as [`separates_by`] measures it:
 /// in the frame of the edge's polygon, its normal turned once and only the
-/// nearest vertex placed: what a cached axis costs to ask again.
+/// nearest vertex placed: what a cached axis costs to ask again. `None`
+/// also where the axis separates by no more than `margin` times its
+/// normal's length (by `|x| + |y|`): with a margin above rounding, an
+/// answer proves the polygons apart as [`separates_by`] does, in the same
+/// pass.
 pub(crate) fn face_and_vertex_by<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     a: &[V2<R>],
     b: &[V2<R>],
     slot: usize,
+    margin: R,
 ) -> Option<FaceAndVertex<R>>
 where
     R: Real,
@@ -364,7 +376,9 @@ where
         let n = (q - p).perp_cw();
         let (v, least) = nearest(b, pair.pair_vector_to_b(n));
         let v = pair.b_to_pair(v);
-        let (distance, unit, foot) = foot_on_edge(p, q, n, v, least + n.dot(offset) - n.dot(p))?;
+        let reach = least + n.dot(offset) - n.dot(p);
+        (reach > margin * n.l1()).then_some(())?;
+        let (distance, unit, foot) = foot_on_edge(p, q, n, v, reach)?;
         Some((distance, unit, foot, v))
     } else {
         let (p, q) = edge_ends(b, slot.checked_sub(M)?)?;
@@ -372,7 +386,9 @@ where
         let m = pair.b_vector_to_pair(n);
         let (v, least) = nearest(a, m);
         let (p_placed, q_placed) = (pair.b_to_pair(p), pair.b_to_pair(q));
-        let (distance, unit, foot) = foot_on_edge(p_placed, q_placed, m, v, least - n.dot(p) - m.dot(offset))?;
+        let reach = least - n.dot(p) - m.dot(offset);
+        (reach > margin * n.l1()).then_some(())?;
+        let (distance, unit, foot) = foot_on_edge(p_placed, q_placed, m, v, reach)?;
         Some((distance, -unit, v, foot))
     }
 }

@@ -248,8 +248,9 @@ mod small {
 
         /// The intersection test of two small polygons: the cached
         /// separating axis or enclosing triangle if either still decides,
-        /// else every axis (and the cache refilled). The verdict is the
-        /// cold test's.
+        /// else the shapes' disks where they do (as the cold test asks them
+        /// first), else every axis (and the cache refilled). The verdict is
+        /// the cold test's.
         pub(crate) fn intersects_small<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Detection
         where
             A: SupportMap<R> + ?Sized,
@@ -261,6 +262,14 @@ mod small {
                     return decided(true);
                 }
             } else if self.still_separates(pair, a, b) {
+                return decided(false);
+            }
+            // The disks leave the cache as it was: they decide the pair
+            // again next step at least as cheaply.
+            if pair.inner_disks_overlap() {
+                return decided(true);
+            }
+            if pair.bounding_disks_apart() {
                 return decided(false);
             }
             let polygons = Polygons::new(pair, a, b);
@@ -275,29 +284,44 @@ mod small {
             Detection { intersecting: !separated, iterations: 1, status: Status::Converged }
         }
 
-        /// The distance of two small polygons apart (the cached intersection
-        /// test says so first, which leaves a separating axis in the cache)
-        /// where their closest features are an edge and a vertex: from the
-        /// cached axis, else from the one that separates them the most, kept
-        /// for the next step ([`face_and_vertex_placed`]). `None` where
-        /// two vertices are closest: GJK answers.
+        /// The distance of two small polygons where their closest features
+        /// are an edge and a vertex: `None` where they overlap (the cold
+        /// test's verdict), `Some(None)` where two vertices are closest
+        /// (GJK answers). First from the cached axis alone, where it still
+        /// separates them by a margin above rounding (the cold queries then
+        /// say apart too) and its edge and nearest vertex are still the
+        /// closest features: one pass over the axis decides and measures,
+        /// the common case from step to step. Else the cached intersection
+        /// test, and the axis that separates them the most, kept for the
+        /// next step ([`face_and_vertex_placed`]).
         pub(crate) fn face_and_vertex<A, B>(
             &mut self,
             pair: &Pair<'_, R, A, B>,
             a: &[V2<R>],
             b: &[V2<R>],
-        ) -> Option<FaceAndVertex<R>>
+        ) -> Option<Option<FaceAndVertex<R>>>
         where
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            if let Some(found) = face_and_vertex_by(pair, a, b, self.separating as usize) {
-                return Some(found);
+            let margin = R::from_u32(ROUNDING) * R::EPSILON * pair.coordinates_size();
+            if let Some(found) = face_and_vertex_by(pair, a, b, self.separating as usize, margin) {
+                return Some(Some(found));
+            }
+            if self.intersects_small(pair, a, b).intersecting {
+                return None;
             }
             let best = Axes::new(pair, a, b).most_separating_by_square();
-            let found = face_and_vertex_placed(pair, a, b, best)?;
-            self.separating = best as u32;
+            let found = face_and_vertex_placed(pair, a, b, best);
+            if found.is_some() {
+                self.separating = best as u32;
+            }
             Some(found)
+        }
+
+        /// Whether the cache holds an axis that last separated the pair.
+        pub(crate) fn expects_apart(&self) -> bool {
+            self.separating != NO_ID
         }
 
         /// The last leading axes, if the motion since cannot have let any
