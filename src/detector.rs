@@ -596,14 +596,14 @@ impl<R: Real, P> Gjk<R, P> {
     {
         let mut pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if pair.inner_disks_overlap() {
+            return Detection { intersecting: true, iterations: 0, status: Status::Converged };
+        }
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO {
             if let Some((pa, pb)) = pair.small_polygons() {
                 return cache.intersects_small(&pair, pa, pb);
             }
-        }
-        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if pair.inner_disks_overlap() {
-            return Detection { intersecting: true, iterations: 0, status: Status::Converged };
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if self.config.detect_epsilon() == R::ZERO && pair.bounding_disks_apart() {
@@ -638,6 +638,11 @@ impl<R: Real, P> Gjk<R, P> {
         let pair = Pair::new(a, ta, b, tb);
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((pa, pb)) = pair.small_polygons() {
+            // Disks first, as the cold query asks them: a pair they decide
+            // never reads its cache.
+            if pair.inner_disks_overlap() {
+                return None;
+            }
             // Overlapping or apart as the cold query says; apart, from the
             // cached axis where it still gives the distance.
             match cache.face_and_vertex(&pair, pa, pb) {

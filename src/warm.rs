@@ -257,18 +257,15 @@ mod small {
             B: SupportMap<R> + ?Sized,
         {
             let decided = |intersecting| Detection { intersecting, iterations: 0, status: Status::Converged };
-            if self.separating == NO_ID {
-                if self.encloses(pair, a, b) {
-                    return decided(true);
+            if self.separating != NO_ID {
+                if self.still_separates(pair, a, b) {
+                    return decided(false);
                 }
-            } else if self.still_separates(pair, a, b) {
-                return decided(false);
-            }
-            // The disks leave the cache as it was: they decide the pair
-            // again next step at least as cheaply.
-            if pair.inner_disks_overlap() {
+            } else if self.ids[0] != NO_ID && self.encloses(pair, a, b) {
                 return decided(true);
             }
+            // The cold test's next question: a pair whose disks are apart
+            // keeps its cache as it was, which costs no more to ask again.
             if pair.bounding_disks_apart() {
                 return decided(false);
             }
@@ -304,9 +301,11 @@ mod small {
             A: SupportMap<R> + ?Sized,
             B: SupportMap<R> + ?Sized,
         {
-            let margin = R::from_u32(ROUNDING) * R::EPSILON * pair.coordinates_size();
-            if let Some(found) = face_and_vertex_by(pair, a, b, self.separating as usize, margin) {
-                return Some(Some(found));
+            if self.separating != NO_ID {
+                let margin = R::from_u32(ROUNDING) * R::EPSILON * pair.coordinates_size();
+                if let Some(found) = face_and_vertex_by(pair, a, b, self.separating as usize, margin) {
+                    return Some(Some(found));
+                }
             }
             if self.intersects_small(pair, a, b).intersecting {
                 return None;
