@@ -248,9 +248,10 @@ mod small {
 
         /// The intersection test of two small polygons: the cached
         /// separating axis or enclosing triangle if either still decides,
-        /// else the shapes' disks where they do (as the cold test asks them
-        /// first), else every axis (and the cache refilled). The verdict is
-        /// the cold test's.
+        /// else the bounding disks where they are apart (the cold test's
+        /// next question, after the inner disks its caller asks), else
+        /// every axis (and the cache refilled). The verdict is the cold
+        /// test's.
         pub(crate) fn intersects_small<A, B>(&mut self, pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>]) -> Detection
         where
             A: SupportMap<R> + ?Sized,

@@ -442,6 +442,46 @@ macro_rules! warm_suite {
                 assert!(overlapping > 1000 && decided * 10 >= overlapping * 9, "{decided} of {overlapping} decided");
             }
 
+            /// Pairs of small polygons apart, their caches filled a step
+            /// before, moved along their normal until they nearly touch (gaps
+            /// of 2^j eps either way): every query checked as in the
+            /// sequences, so the cached intersection test and distance give
+            /// the cold verdicts where a cached axis's margin above rounding
+            /// decides or not, and the distance and manifold are the exact
+            /// ones within their tolerances.
+            #[test]
+            fn near_touching() {
+                let mut rng = Rng(5);
+                let gjk = Gjk::<R>::new();
+                let mut tally = Tally::default();
+                for _ in 0..cases(100) {
+                    let (Some(ga), Some(gb)) = (random_geo(&mut rng, 0), random_geo(&mut rng, 0)) else { continue };
+                    let (Some(a), Some(b)) = (build(&ga), build(&gb)) else { continue };
+                    let (S::Small(sa), S::Small(sb)) = (&a, &b) else { continue };
+                    let pose_a = [0.0, 0.0, rng.range(0.0, TAU)];
+                    let far = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), rng.range(0.0, TAU)];
+                    let Some(s) = gjk.distance(sa, &transform(&pose_a), sb, &transform(&far)) else { continue };
+                    let (size, n) = (ga.extent().max(gb.extent()), pt(s.normal));
+                    // B moved along the normal by the distance less `gap`.
+                    let at = |gap: f64| {
+                        let shift = s.distance as f64 - gap;
+                        [far[0] - shift * n[0], far[1] - shift * n[1], far[2]]
+                    };
+                    // Across the rounding of the cold test and the cached
+                    // axis's margin.
+                    let gaps = (0..13).flat_map(|j| [1.0, -1.0].map(|side| side * (1u32 << j) as f64 * EPS * size));
+                    for gap in gaps.chain([0.0]) {
+                        let mut caches = Caches::default();
+                        let mut filling = Tally::default();
+                        let before = [pose_a, at(0.01 * size)];
+                        check_step(&ga, &gb, &a, &b, &before, &mut caches, &mut filling, "before");
+                        check_step(&ga, &gb, &a, &b, &[pose_a, at(gap)], &mut caches, &mut tally, "near touching");
+                    }
+                }
+                println!("{}: {tally:?}", stringify!($modname));
+                assert!(tally.steps > 1000 && tally.decided > 0, "{tally:?}");
+            }
+
             /// Every kind of shape against every other: polygons of up to 32
             /// vertices, circles, capsules, rounded polygons.
             #[test]
