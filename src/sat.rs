@@ -239,37 +239,78 @@ fn edge_ends<R: Real>(v: &[V2<R>], i: usize) -> Option<(V2<R>, V2<R>)> {
     Some((*v.get(i)?, *v.get(i + 1).or(v.first())?))
 }
 
-/// Whether edge `slot` of the pair's small polygons (A's edges, then B's
-/// from slot [`M`]) separates them by more than `margin` times its normal's
-/// length (by `|x| + |y|`), measured in the frame of the edge's polygon: its
-/// normal turned once, no vertex of the other placed. With a margin above
-/// rounding, [`Axes::separated`] then says apart too.
-pub(crate) fn separates_by<R, A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], slot: usize, margin: R) -> bool
+/// Edge `slot` of the pair's small polygons (A's edges, then B's from slot
+/// [`M`]) measured in the frame of its own polygon, its normal turned once
+/// and no vertex of the other placed: what a cached axis costs to ask again.
+struct AxisReach<'s, R> {
+    own_is_a: bool,
+    /// The edge's ends and outward normal (not unit), in its polygon's frame.
+    p: V2<R>,
+    q: V2<R>,
+    n: V2<R>,
+    /// The other polygon, the normal in its frame, and how far its nearest
+    /// vertex lies beyond the edge's line, times `|n|`.
+    other: &'s [V2<R>],
+    d: V2<R>,
+    reach: R,
+}
+
+impl<R: Real> AxisReach<'_, R> {
+    /// The other polygon's first vertex nearest the edge's line, in its own
+    /// frame (asked only where the distance is wanted: the verdict needs
+    /// only the least dot product, a cheaper tree).
+    #[inline(always)]
+    fn nearest(&self) -> Option<V2<R>> {
+        let first = self.other.first().copied().unwrap_or_default();
+        let dots: [R; M] = core::array::from_fn(|i| -self.d.dot(self.other.get(i).copied().unwrap_or(first)));
+        self.other.get(first_max(&dots)).copied()
+    }
+}
+
+/// [`AxisReach`] of edge `slot`; `None` for a slot out of range. Which
+/// polygon owns the edge is a coin toss from pair to pair: both ways are
+/// computed and one picked, not branched on, and the least dot product is
+/// a tree of minima over lanes padded with the first vertex (which leaves
+/// the minimum as it is), not a chain over the slice.
+#[inline(always)]
+fn axis_reach<'s, R, A, B>(
+    pair: &Pair<'_, R, A, B>,
+    a: &'s [V2<R>],
+    b: &'s [V2<R>],
+    slot: usize,
+) -> Option<AxisReach<'s, R>>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    // Which polygon owns the edge is a coin toss from pair to pair: both
-    // ways are computed and one picked, not branched on.
     let own_is_a = slot < M;
     let (own, other) = core::hint::select_unpredictable(own_is_a, (a, b), (b, a));
-    let Some((p, q)) = edge_ends(own, core::hint::select_unpredictable(own_is_a, slot, slot.wrapping_sub(M))) else {
-        return false;
-    };
+    let (p, q) = edge_ends(own, core::hint::select_unpredictable(own_is_a, slot, slot.wrapping_sub(M)))?;
     let n = (q - p).perp_cw();
     // The normal in the other polygon's frame, and the offset of B's
     // reference from A's seen along the normal from the edge's side.
     let (to_b, to_pair) = (pair.pair_vector_to_b(n), pair.b_vector_to_pair(n));
     let offset = pair.pose().2;
     let (d, along_offset) =
-        core::hint::select_unpredictable(own_is_a, (to_b, n.dot(offset)), (to_pair, R::ZERO - to_pair.dot(offset)));
-    // Padded with the first vertex, which leaves the minimum as it is: a
-    // tree of minima over fixed lanes, not a chain over the slice.
+        core::hint::select_unpredictable(own_is_a, (to_b, n.dot(offset)), (to_pair, -to_pair.dot(offset)));
     let first = other.first().copied().unwrap_or_default();
     let v: [V2<R>; M] = core::array::from_fn(|i| other.get(i).copied().unwrap_or(first));
     let reach = least_dot(d, &v.map(|p| p.x), &v.map(|p| p.y)) + along_offset - n.dot(p);
-    reach > margin * n.l1()
+    Some(AxisReach { own_is_a, p, q, n, other, d, reach })
+}
+
+/// Whether edge `slot` of the pair's small polygons (A's edges, then B's
+/// from slot [`M`]) separates them by more than `margin` times its normal's
+/// length (by `|x| + |y|`), measured as [`AxisReach`] is. With a margin
+/// above rounding, [`Axes::separated`] then says apart too.
+pub(crate) fn separates_by<R, A, B>(pair: &Pair<'_, R, A, B>, a: &[V2<R>], b: &[V2<R>], slot: usize, margin: R) -> bool
+where
+    R: Real,
+    A: SupportMap<R> + ?Sized,
+    B: SupportMap<R> + ?Sized,
+{
+    axis_reach(pair, a, b, slot).is_some_and(|axis| axis.reach > margin * axis.n.l1())
 }
 
 /// Where vertex `v` lies beyond the edge from `p` to `q` (outward normal
@@ -345,13 +386,11 @@ fn padded<R: Real>(vertices: &[V2<R>], place: impl Fn(V2<R>) -> V2<R>) -> [V2<R>
     v
 }
 
-/// [`face_and_vertex_placed`], measured as [`separates_by`] measures it:
-/// in the frame of the edge's polygon, its normal turned once and only the
-/// nearest vertex placed: what a cached axis costs to ask again. `None`
-/// also where the axis separates by no more than `margin` times its
-/// normal's length (by `|x| + |y|`): with a margin above rounding, an
-/// answer proves the polygons apart as [`separates_by`] does, in the same
-/// pass.
+/// [`face_and_vertex_placed`], measured as [`AxisReach`] is, only the
+/// nearest vertex (or the edge) placed. `None` also where the axis
+/// separates by no more than `margin` times its normal's length (by
+/// `|x| + |y|`): with a margin above rounding, an answer proves the
+/// polygons apart as [`separates_by`] does, in the same pass.
 pub(crate) fn face_and_vertex_by<R, A, B>(
     pair: &Pair<'_, R, A, B>,
     a: &[V2<R>],
@@ -364,32 +403,18 @@ where
     A: SupportMap<R> + ?Sized,
     B: SupportMap<R> + ?Sized,
 {
-    // The first vertex of the least dot product along `d`, and that product.
-    let nearest = |v: &[V2<R>], d: V2<R>| {
-        let dots: [R; M] = core::array::from_fn(|i| v.get(i).map_or(-R::INFINITY, |&p| -d.dot(p)));
-        let j = first_max(&dots);
-        (v[j], -dots[j])
-    };
-    let offset = pair.pose().2;
-    if slot < M {
-        let (p, q) = edge_ends(a, slot)?;
-        let n = (q - p).perp_cw();
-        let (v, least) = nearest(b, pair.pair_vector_to_b(n));
-        let v = pair.b_to_pair(v);
-        let reach = least + n.dot(offset) - n.dot(p);
-        (reach > margin * n.l1()).then_some(())?;
+    let axis = axis_reach(pair, a, b, slot)?;
+    let AxisReach { own_is_a, p, q, n, reach, .. } = axis;
+    (reach > margin * n.l1()).then_some(())?;
+    let nearest = axis.nearest()?;
+    if own_is_a {
+        let v = pair.b_to_pair(nearest);
         let (distance, unit, foot) = foot_on_edge(p, q, n, v, reach)?;
         Some((distance, unit, foot, v))
     } else {
-        let (p, q) = edge_ends(b, slot.checked_sub(M)?)?;
-        let n = (q - p).perp_cw();
-        let m = pair.b_vector_to_pair(n);
-        let (v, least) = nearest(a, m);
-        let (p_placed, q_placed) = (pair.b_to_pair(p), pair.b_to_pair(q));
-        let reach = least - n.dot(p) - m.dot(offset);
-        (reach > margin * n.l1()).then_some(())?;
-        let (distance, unit, foot) = foot_on_edge(p_placed, q_placed, m, v, reach)?;
-        Some((distance, -unit, v, foot))
+        let (p, q, m) = (pair.b_to_pair(p), pair.b_to_pair(q), pair.b_vector_to_pair(n));
+        let (distance, unit, foot) = foot_on_edge(p, q, m, nearest, reach)?;
+        Some((distance, -unit, nearest, foot))
     }
 }
 
