@@ -6,7 +6,9 @@
 use core::cell::Cell;
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-use crate::polytope::{at, pair_support_near, polytope_support_between, ARC_SEARCH_MIN, SMALL_POLYGON_MAX};
+use crate::polytope::{
+    at, pair_support_near, polytope_support_between, square_supports, ARC_SEARCH_MIN, SMALL_POLYGON_MAX,
+};
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
 use crate::transform::Transform;
@@ -331,6 +333,21 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         // NO_FEATURE (u32::MAX) and vertex indices past 16 bits both land here.
         let id = if ia >= 0xFFFF || ib >= 0xFFFF { NO_ID } else { (ia << 16) | ib };
         MinkowskiVertex { w: b - a, a, b, id }
+    }
+
+    /// The supports along `u`, `u.perp()`, `-u` and `-u.perp()`, as
+    /// [`support`](Self::support) gives each, in that order (the hints left
+    /// where the last leaves them), from one pass over each polygon core,
+    /// where both are scanned in SIMD ([`square_supports`]).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn scanned_square(&self, u: V2<R>) -> Option<[MinkowskiVertex<R>; 4]> {
+        let (a, b) = self.polygon_cores()?;
+        let turned = u.perp();
+        // A's supports are along the reverse directions, B's in its frame.
+        let ia = square_supports(a, -u, -turned)?;
+        let ib = square_supports(b, self.inverse_rotate(u), self.inverse_rotate(turned))?;
+        Some(core::array::from_fn(|k| self.vertex_of((ia[k], at(a, ia[k])), (ib[k], at(b, ib[k])))))
     }
 
     /// The two cores as small polygons (of at most [`SMALL_POLYGON_MAX`]

@@ -38,13 +38,21 @@ where
     let u = pair.first_direction;
     let size = pair.coordinates_size();
     let margin = R::from_u32(64) * R::EPSILON * size;
-    let first = pair.support_shared(u);
     // The first support's plane separates the origin: apart.
-    if pair.radius() == R::ZERO && first.w.dot(u) < -margin * u.l1() {
-        return QuadStart::Apart;
-    }
-    let turned = u.perp();
-    let quad = [first, pair.support_shared(turned), pair.support_shared(-u), pair.support_shared(-turned)];
+    let parted = |first: &MinkowskiVertex<R>| pair.radius() == R::ZERO && first.w.dot(u) < -margin * u.l1();
+    let quad = match pair.scanned_square(u) {
+        Some(quad) if parted(&quad[0]) => return QuadStart::Apart,
+        Some(quad) => quad,
+        None => {
+            // One at a time, so that a pair apart asks for one support only.
+            let first = pair.support_shared(u);
+            if parted(&first) {
+                return QuadStart::Apart;
+            }
+            let turned = u.perp();
+            [first, pair.support_shared(turned), pair.support_shared(-u), pair.support_shared(-turned)]
+        }
+    };
     // Supports along directions turning counter-clockwise are counter-
     // clockwise on the boundary.
     if !surely_encloses(&quad.each_ref().map(|v| v.w), margin, size) {

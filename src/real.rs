@@ -45,6 +45,22 @@ mod sealed {
             None
         }
 
+        /// The first vertices of largest and of least dot product with `u`
+        /// and with `t`, as `[max u, max t, min u, min t]`: the supports
+        /// along `u`, `t`, `-u` and `-t`, the very vertices
+        /// [`first_max_dot`](Self::first_max_dot) gives each (a least dot
+        /// negated is the dot with the negated direction, to the bit), from
+        /// one pass over at most 64 vertices where the target has SIMD.
+        /// `None` elsewhere, and for more vertices.
+        #[inline(always)]
+        fn extreme_dots(vertices: &[super::V2<Self>], u: super::V2<Self>, t: super::V2<Self>) -> Option<[usize; 4]>
+        where
+            Self: Sized,
+        {
+            let _ = (vertices, u, t);
+            None
+        }
+
         /// For each axis (`nx`, `ny`, not unit) and its least reach, the
         /// separation along its unit normal, as
         /// [`scaled_separation`](super::scaled_separation) gives it,
@@ -134,6 +150,11 @@ mod sealed {
                 Err(_) => super::sse2::first_max_dot_f32(vertices, d),
             })
         }
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn extreme_dots(vertices: &[super::V2<f32>], u: super::V2<f32>, t: super::V2<f32>) -> Option<[usize; 4]> {
+            (vertices.len() <= super::sse2::EXTREMES_MAX).then(|| super::sse2::extreme_dots_f32(vertices, u, t))
+        }
     }
     impl Sealed for f64 {
         const FLAT_GJK: bool = cfg!(target_os = "none");
@@ -169,6 +190,11 @@ mod sealed {
                 Ok(eight) => super::sse2::first_max_dot8_f64(eight, d),
                 Err(_) => super::sse2::first_max_dot_f64(vertices, d),
             })
+        }
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn extreme_dots(vertices: &[super::V2<f64>], u: super::V2<f64>, t: super::V2<f64>) -> Option<[usize; 4]> {
+            (vertices.len() <= super::sse2::EXTREMES_MAX).then(|| super::sse2::extreme_dots_f64(vertices, u, t))
         }
     }
 }
@@ -436,6 +462,121 @@ mod sse2 {
             }
         }
         first_equal(pairs.remainder(), v.len() - pairs.remainder().len(), d, top)
+    }
+
+    /// The most vertices [`extreme_dots_f32`] and [`extreme_dots_f64`] keep
+    /// the dots of.
+    pub const EXTREMES_MAX: usize = 64;
+
+    #[inline(always)]
+    pub fn extreme_dots_f32(v: &[V2<f32>], u: V2<f32>, t: V2<f32>) -> [usize; 4] {
+        // SAFETY: as above.
+        unsafe { extremes_f32(v, u, t) }
+    }
+
+    #[inline(always)]
+    pub fn extreme_dots_f64(v: &[V2<f64>], u: V2<f64>, t: V2<f64>) -> [usize; 4] {
+        // SAFETY: as above.
+        unsafe { extremes_f64(v, u, t) }
+    }
+
+    /// [`running_max_f32`] along two directions at once, keeping both ends
+    /// of each: every vertex is loaded once for four supports. The extremes
+    /// first (their chains side by side), then the first vertex equal to
+    /// each, from the dots kept.
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn extremes_f32(v: &[V2<f32>], u: V2<f32>, t: V2<f32>) -> [usize; 4] {
+        let (du, dt) = (_mm_setr_ps(u.x, u.y, u.x, u.y), _mm_setr_ps(t.x, t.y, t.x, t.y));
+        let load = |p: &[V2<f32>]| _mm_setr_ps(p[0].x, p[0].y, p[1].x, p[1].y);
+        // Products of vertices 0 to 3 (two registers), summed in pairs.
+        let dots = |(low, high): (__m128, __m128), d: __m128| {
+            let (low, high) = (_mm_mul_ps(low, d), _mm_mul_ps(high, d));
+            _mm_add_ps(_mm_shuffle_ps::<0b10_00_10_00>(low, high), _mm_shuffle_ps::<0b11_01_11_01>(low, high))
+        };
+        let mut kept = [[_mm_setzero_ps(); EXTREMES_MAX / 4]; 2];
+        let mut top = [_mm_set1_ps(f32::NEG_INFINITY); 2];
+        let mut bottom = [_mm_set1_ps(f32::INFINITY); 2];
+        for (k, c) in v.chunks_exact(4).take(EXTREMES_MAX / 4).enumerate() {
+            let points = (load(&c[..2]), load(&c[2..]));
+            let (x, y) = (dots(points, du), dots(points, dt));
+            kept[0][k] = x;
+            kept[1][k] = y;
+            // A NaN dot leaves each extreme as it was (the second operand).
+            top = [_mm_max_ps(x, top[0]), _mm_max_ps(y, top[1])];
+            bottom = [_mm_min_ps(x, bottom[0]), _mm_min_ps(y, bottom[1])];
+        }
+        let highest = |m: __m128| {
+            let m = _mm_max_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
+            _mm_cvtss_f32(_mm_max_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m)))
+        };
+        let lowest = |m: __m128| {
+            let m = _mm_min_ps(m, _mm_shuffle_ps::<0b01_00_11_10>(m, m));
+            _mm_cvtss_f32(_mm_min_ps(m, _mm_shuffle_ps::<0b10_11_00_01>(m, m)))
+        };
+        let whole = (v.len() / 4).min(EXTREMES_MAX / 4);
+        let lanes = [top.map(highest), bottom.map(lowest)];
+        first_at_extremes((v, 4 * whole), [u, t], lanes, |axis, extreme| {
+            let wanted = _mm_set1_ps(extreme);
+            first_match(&kept[axis][..whole], 4, |quad| _mm_movemask_ps(_mm_cmpeq_ps(quad, wanted)))
+        })
+    }
+
+    /// [`extremes_f32`] in two lanes, as [`running_max_f64`].
+    #[target_feature(enable = "sse2")]
+    #[inline]
+    fn extremes_f64(v: &[V2<f64>], u: V2<f64>, t: V2<f64>) -> [usize; 4] {
+        let (du, dt) = (_mm_setr_pd(u.x, u.y), _mm_setr_pd(t.x, t.y));
+        let load = |p: V2<f64>| _mm_setr_pd(p.x, p.y);
+        // The products (x dx, y dy) of two vertices, summed across.
+        let dots = |(p, q): (__m128d, __m128d), d: __m128d| {
+            let (p, q) = (_mm_mul_pd(p, d), _mm_mul_pd(q, d));
+            _mm_add_pd(_mm_unpacklo_pd(p, q), _mm_unpackhi_pd(p, q))
+        };
+        let mut kept = [[_mm_setzero_pd(); EXTREMES_MAX / 2]; 2];
+        let mut top = [_mm_set1_pd(f64::NEG_INFINITY); 2];
+        let mut bottom = [_mm_set1_pd(f64::INFINITY); 2];
+        for (k, c) in v.chunks_exact(2).take(EXTREMES_MAX / 2).enumerate() {
+            let points = (load(c[0]), load(c[1]));
+            let (x, y) = (dots(points, du), dots(points, dt));
+            kept[0][k] = x;
+            kept[1][k] = y;
+            top = [_mm_max_pd(x, top[0]), _mm_max_pd(y, top[1])];
+            bottom = [_mm_min_pd(x, bottom[0]), _mm_min_pd(y, bottom[1])];
+        }
+        let highest = |m: __m128d| _mm_cvtsd_f64(_mm_max_pd(m, _mm_shuffle_pd::<0b01>(m, m)));
+        let lowest = |m: __m128d| _mm_cvtsd_f64(_mm_min_pd(m, _mm_shuffle_pd::<0b01>(m, m)));
+        let whole = (v.len() / 2).min(EXTREMES_MAX / 2);
+        let lanes = [top.map(highest), bottom.map(lowest)];
+        first_at_extremes((v, 2 * whole), [u, t], lanes, |axis, extreme| {
+            let equal = equal_f64(&kept[axis], whole, _mm_set1_pd(extreme));
+            (equal != 0).then(|| equal.trailing_zeros() as usize)
+        })
+    }
+
+    /// The first vertex at each extreme of the dots with `u` and `t`, as
+    /// `[max u, max t, min u, min t]`: each extreme of the lanes
+    /// (`lanes[0]` the largest along `u` and `t`, `lanes[1]` the least)
+    /// taken on over the vertices of `v` past the lanes' `covered`, then
+    /// found in the lanes (`in_lanes`, the first kept dot equal to it along
+    /// an axis) or else past them.
+    #[inline(always)]
+    fn first_at_extremes<R: super::Real>(
+        (v, covered): (&[V2<R>], usize),
+        [u, t]: [V2<R>; 2],
+        lanes: [[R; 2]; 2],
+        in_lanes: impl Fn(usize, R) -> Option<usize>,
+    ) -> [usize; 4] {
+        let tail = v.get(covered..).unwrap_or_default();
+        core::array::from_fn(|k| {
+            let (axis, least) = (k % 2, k >= 2);
+            let d = [u, t][axis];
+            let extreme = tail.iter().fold(lanes[usize::from(least)][axis], |m, p| {
+                let dot = p.dot(d);
+                core::hint::select_unpredictable(if least { dot < m } else { dot > m }, dot, m)
+            });
+            in_lanes(axis, extreme).unwrap_or_else(|| first_equal(tail, covered, d, extreme))
+        })
     }
 
     /// The first lane whose bit `mask` sets, over `blocks` of `lanes` lanes
@@ -1145,6 +1286,29 @@ mod tests {
             assert_eq!(super::sse2::first_max_dot_f32(&v, d), scalar_scan(&v, d), "{v:?} {d:?}");
         }
         std::println!("the wide scan ran {wide_ran} times");
+    }
+
+    /// The four supports of one SIMD pass are the scalar scan's along `u`,
+    /// `t`, `-u` and `-t`, in f64 and f32, over every length up to past
+    /// the lanes' most (the rest read one by one), with many ties (values drawn from few, zeros of both
+    /// signs among them).
+    #[test]
+    fn extreme_dots_are_the_scalar_scans_vertices() {
+        use super::V2;
+        let mut seed = 13;
+        for round in 0..40_000 {
+            let len: usize = 1 + round % (super::sse2::EXTREMES_MAX + 8);
+            let coordinates: std::vec::Vec<f64> = (0..len.div_ceil(4) + 1).flat_map(|_| values(&mut seed)).collect();
+            let v: std::vec::Vec<V2<f64>> =
+                (0..len).map(|i| V2::new(coordinates[2 * i], coordinates[2 * i + 1])).collect();
+            let [u, t] = [0; 2].map(|_| values(&mut seed)).map(|d| V2::new(d[0], d[1]));
+            let expected = [u, t, -u, -t].map(|d| scalar_scan(&v, d));
+            assert_eq!(super::sse2::extreme_dots_f64(&v, u, t), expected, "{v:?} {u:?} {t:?}");
+            let single = |p: &V2<f64>| V2::new(p.x as f32, p.y as f32);
+            let (v, u, t) = (v.iter().map(single).collect::<std::vec::Vec<_>>(), single(&u), single(&t));
+            let expected = [u, t, -u, -t].map(|d| scalar_scan(&v, d));
+            assert_eq!(super::sse2::extreme_dots_f32(&v, u, t), expected, "{v:?} {u:?} {t:?}");
+        }
     }
 
     /// Separations in lanes are `scaled_separation`'s, to the bit: zero
