@@ -7,7 +7,7 @@ use core::cell::Cell;
 
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 use crate::polytope::{
-    at, pair_support_near, polytope_support_between, square_supports, ARC_SEARCH_MIN, SMALL_POLYGON_MAX,
+    at, pair_support_near, polytope_support_between, squares_in_one_pass, ARC_SEARCH_MIN, SMALL_POLYGON_MAX,
 };
 use crate::real::{Real, V2};
 use crate::shape::SupportMap;
@@ -338,15 +338,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// The supports along `u`, `u.perp()`, `-u` and `-u.perp()`, as
     /// [`support`](Self::support) gives each, in that order (the hints left
     /// where the last leaves them), from one pass over each polygon core,
-    /// where both are scanned in SIMD ([`square_supports`]).
+    /// where both are scanned in SIMD ([`squares_in_one_pass`]).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn scanned_square(&self, u: V2<R>) -> Option<[MinkowskiVertex<R>; 4]> {
-        let (a, b) = self.polygon_cores()?;
+        // Both asked first, so that neither pass is taken for nothing.
+        let one_pass =
+            |(a, b): &(&[V2<R>], &[V2<R>])| squares_in_one_pass::<R>(a.len()) && squares_in_one_pass::<R>(b.len());
+        let (a, b) = self.polygon_cores().filter(one_pass)?;
         let turned = u.perp();
         // A's supports are along the reverse directions, B's in its frame.
-        let ia = square_supports(a, -u, -turned)?;
-        let ib = square_supports(b, self.inverse_rotate(u), self.inverse_rotate(turned))?;
+        let ia = R::extreme_dots(a, -u, -turned)?;
+        let ib = R::extreme_dots(b, self.inverse_rotate(u), self.inverse_rotate(turned))?;
         Some(core::array::from_fn(|k| self.vertex_of((ia[k], at(a, ia[k])), (ib[k], at(b, ib[k])))))
     }
 

@@ -373,15 +373,14 @@ fn simd_scanned<R: Real>(len: usize) -> bool {
     R::SIMD_SCAN && len <= SIMD_SCAN_MAX
 }
 
-/// The supports of a polytope along `u`, `t`, `-u` and `-t` (their
-/// indices) from one SIMD pass ([`Real::extreme_dots`]), where each alone would
-/// be a SIMD scan of every vertex; `None` elsewhere. Shapes of a few
-/// vertices (a rectangle's closed-form support) are left to their own.
+/// Whether a polytope of `len` vertices gives its supports along `u`, `t`,
+/// `-u` and `-t` from one SIMD pass ([`Real::extreme_dots`]): where each alone
+/// would be a SIMD scan of every vertex. Shapes of a few vertices (a
+/// rectangle's closed-form support) are left to their own.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
-pub(crate) fn square_supports<R: Real>(vertices: &[V2<R>], u: V2<R>, t: V2<R>) -> Option<[usize; 4]> {
-    let len = vertices.len();
-    (len > SCAN_ONLY_MAX && simd_scanned::<R>(len)).then(|| R::extreme_dots(vertices, u, t)).flatten()
+pub(crate) fn squares_in_one_pass<R: Real>(len: usize) -> bool {
+    len > SCAN_ONLY_MAX && simd_scanned::<R>(len)
 }
 
 /// Up to this capacity a polytope is always scanned: firmware with small
