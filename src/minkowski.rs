@@ -346,6 +346,9 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let one_pass =
             |(a, b): &(&[V2<R>], &[V2<R>])| squares_in_one_pass::<R>(a.len()) && squares_in_one_pass::<R>(b.len());
         let (a, b) = self.polygon_cores().filter(one_pass)?;
+        // Both polygons' lines asked for before either pass waits on them.
+        crate::polytope::prefetch_all(a);
+        crate::polytope::prefetch_all(b);
         let turned = u.perp();
         // A's supports are along the reverse directions, B's in its frame.
         let ia = R::extreme_dots(a, -u, -turned)?;

@@ -347,6 +347,19 @@ fn prefetch<R: Real>(vertices: &[V2<R>], i: usize) {
     let _ = (vertices, i);
 }
 
+/// Asks for every cache line of `vertices` at once, where a scan would
+/// wait on them one after another (the last vertex too: a slice that
+/// starts within a line ends within one more).
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn prefetch_all<R: Real>(vertices: &[V2<R>]) {
+    let per_line = (64 / core::mem::size_of::<V2<R>>()).max(1);
+    for i in (0..vertices.len()).step_by(per_line) {
+        prefetch(vertices, i);
+    }
+    prefetch(vertices, vertices.len().saturating_sub(1));
+}
+
 /// The first index in `lo..hi` where `reached` holds, given that it holds
 /// from there on; `hi` where it holds nowhere. A binary search over indices
 /// rather than a slice (the searches here go round a polygon).
