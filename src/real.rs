@@ -50,8 +50,8 @@ mod sealed {
         /// along `u`, `t`, `-u` and `-t`, the very vertices
         /// [`first_max_dot`](Self::first_max_dot) gives each (a least dot
         /// negated is the dot with the negated direction, to the bit), from
-        /// one pass over at most 64 vertices where the target has SIMD.
-        /// `None` elsewhere, and for more vertices.
+        /// one pass where the target has SIMD (its lanes keep 64 vertices'
+        /// dots; any more are read one by one). `None` elsewhere.
         #[inline(always)]
         fn extreme_dots(vertices: &[super::V2<Self>], u: super::V2<Self>, t: super::V2<Self>) -> Option<[usize; 4]>
         where
@@ -153,7 +153,7 @@ mod sealed {
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn extreme_dots(vertices: &[super::V2<f32>], u: super::V2<f32>, t: super::V2<f32>) -> Option<[usize; 4]> {
-            (vertices.len() <= super::sse2::EXTREMES_MAX).then(|| super::sse2::extreme_dots_f32(vertices, u, t))
+            Some(super::sse2::extreme_dots_f32(vertices, u, t))
         }
     }
     impl Sealed for f64 {
@@ -194,7 +194,7 @@ mod sealed {
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
         fn extreme_dots(vertices: &[super::V2<f64>], u: super::V2<f64>, t: super::V2<f64>) -> Option<[usize; 4]> {
-            (vertices.len() <= super::sse2::EXTREMES_MAX).then(|| super::sse2::extreme_dots_f64(vertices, u, t))
+            Some(super::sse2::extreme_dots_f64(vertices, u, t))
         }
     }
 }
@@ -465,7 +465,7 @@ mod sse2 {
     }
 
     /// The most vertices [`extreme_dots_f32`] and [`extreme_dots_f64`] keep
-    /// the dots of.
+    /// the dots of: the longest polygon scanned in SIMD.
     pub const EXTREMES_MAX: usize = 64;
 
     #[inline(always)]
