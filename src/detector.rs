@@ -764,6 +764,12 @@ impl<R: Real, P> Gjk<R, P> {
     where
         S: SupportMap<R> + ?Sized,
     {
+        // A polygon's fields are read far apart in the cast: asked for at
+        // once, their lines arrive together.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if shape.casts_face_rays() {
+            crate::polytope::prefetch_small(shape);
+        }
         let max = if max_length > R::ZERO { max_length } else { R::INFINITY };
         let reference = V2::from_glam(shape.reference_point());
         // Into the shape's frame, relative to its reference point: the

@@ -14,8 +14,10 @@ use crate::result::{gap_hit, RayCast, RayHit, RayOutcome};
 /// denominators and quotients, then the latest entry and the earliest exit
 /// taken by selects over the lanes. On hosts, where the clip's branches (is
 /// this edge entered, left, the new latest?) change from ray to ray and a
-/// predictor misses them.
+/// predictor misses them. Inlined, so that its answer comes back in
+/// registers, not through a copy on the stack.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
 pub(crate) fn cast_ray_small_polygon<R: Real>(
     vertices: &[V2<R>],
     o: V2<R>,

@@ -334,6 +334,11 @@ pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, fr
 /// for it. Indices past the end are harmless: a prefetch never faults.
 #[inline(always)]
 fn prefetch<R: Real>(vertices: &[V2<R>], i: usize) {
+    prefetch_address(vertices.as_ptr().wrapping_add(i).cast());
+}
+
+#[inline(always)]
+fn prefetch_address(address: *const u8) {
     #[cfg(target_arch = "x86_64")]
     #[allow(unsafe_code)]
     // SAFETY: SSE is part of every x86_64 processor, and a prefetch is a
@@ -341,10 +346,28 @@ fn prefetch<R: Real>(vertices: &[V2<R>], i: usize) {
     // the address (here one computed without `unsafe` pointer arithmetic).
     unsafe {
         use core::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        _mm_prefetch::<_MM_HINT_T0>(vertices.as_ptr().wrapping_add(i).cast());
+        _mm_prefetch::<_MM_HINT_T0>(address.cast());
     }
     #[cfg(not(target_arch = "x86_64"))]
-    let _ = (vertices, i);
+    let _ = address;
+}
+
+/// Asks for every cache line of a value of at most four lines at once (of
+/// a larger one, none: a query may read few of them), so that the fields a
+/// query reads first and those it reads last arrive together, not one
+/// wait after another.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn prefetch_small<T: ?Sized>(value: &T) {
+    let size = core::mem::size_of_val(value);
+    if size > 256 {
+        return;
+    }
+    let start = (value as *const T).cast::<u8>();
+    for offset in (0..size).step_by(64) {
+        prefetch_address(start.wrapping_add(offset));
+    }
+    prefetch_address(start.wrapping_add(size.saturating_sub(1)));
 }
 
 /// Asks for every cache line of `vertices` at once, where a scan would
