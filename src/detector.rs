@@ -14,6 +14,8 @@ use crate::impact::{advance, Sweep, TimeOfImpact};
 use crate::minkowski::{Pair, SupportPoint};
 use crate::point_cores::PointCores;
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::polytope::{cast_ray_small_polygon, FaceRounding, FaceVerdict};
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
 use crate::quad_start::QuadStart;
 use crate::ray::{cast_ray_gjk, Ray};
 use crate::real::{Real, V2};
@@ -797,8 +799,36 @@ impl<R: Real, P> Gjk<R, P> {
         // A polygon's cast in face form, every other shape's in the form of
         // `cast_local_ray` (or by GJK).
         let face = self.closed_form_rays && shape.casts_face_rays();
+        let size = shape.bounding_radius();
+        // A small polygon of a type known when the program is compiled is
+        // clipped by every edge at once on hosts (never through `dyn
+        // SupportMap`, so every target shares the golden batch's path).
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if face && Pair::<R, S, S>::shapes_known() {
+            if let Some(polygon) = shape.small_polygon() {
+                let rounding = FaceRounding::new(origin, rounded_reference, size);
+                let cast = cast_ray_small_polygon(polygon.vertices, origin, direction, max, rounding);
+                let outcome = match cast.verdict {
+                    FaceVerdict::Hit if cast.t.is_finite() && cast.t <= max => {
+                        let (normal, error_bound) = face_hit_world(
+                            cast.normal,
+                            direction,
+                            (cast.t, cast.late),
+                            origin,
+                            rounded_reference,
+                            size,
+                        );
+                        RayOutcome::Hit(world_hit(ray, cast.t, transform.rotate(normal), error_bound))
+                    }
+                    FaceVerdict::Inside => RayOutcome::Inside,
+                    _ => RayOutcome::Miss,
+                };
+                return RayCast::closed_form(outcome);
+            }
+        }
         let local = if face {
-            cast_face_ray(shape, origin, direction, max, rounded_reference)
+            shape
+                .cast_local_face_ray(origin.to_glam(), direction.to_glam(), max)
                 .unwrap_or(RayCast::closed_form(RayOutcome::Miss))
         } else {
             let local = if self.closed_form_rays {
@@ -817,26 +847,20 @@ impl<R: Real, P> Gjk<R, P> {
                 )
             })
         };
-        let size = shape.bounding_radius();
         let outcome = match local.outcome {
             // A closed form of a user's shape could report a hit at infinity
             // (a ray parallel to rounding); no finite hit is a miss.
             RayOutcome::Hit(h) if !(h.distance.is_finite() && h.distance <= max) => RayOutcome::Miss,
             RayOutcome::Hit(h) => {
                 let (normal, error_bound) = if face {
-                    face_hit_world(V2::from_glam(h.normal), direction, &h, origin, rounded_reference, size)
+                    let gap = (h.distance, h.error_bound);
+                    face_hit_world(V2::from_glam(h.normal), direction, gap, origin, rounded_reference, size)
                 } else {
                     let normal = V2::from_glam(h.normal);
                     let cos = normal.dot(direction).abs();
                     (normal, hit_error_bound(h.error_bound, h.distance, cos, origin, rounded_reference, size))
                 };
-                RayOutcome::Hit(RayHit {
-                    distance: h.distance,
-                    // From the world ray, not the local point: one rounding less.
-                    point: (ray.origin + ray.direction * h.distance).to_glam(),
-                    normal: transform.rotate(normal).to_glam(),
-                    error_bound,
-                })
+                RayOutcome::Hit(world_hit(ray, h.distance, transform.rotate(normal), error_bound))
             }
             other => other,
         };
@@ -1047,29 +1071,11 @@ fn in_own_frame<T>(f: impl FnOnce() -> T) -> T {
     f()
 }
 
-/// A polygon's closed-form ray cast in its local frame, in face form
-/// ([`SupportMap::cast_local_face_ray`]). A small polygon of a type known
-/// when the program is compiled is clipped by every edge at once on hosts
-/// (never through `dyn SupportMap`, so every target shares the golden
-/// batch's path).
+/// A hit `t` along the world ray: its point from the world ray, not from
+/// the local point (one rounding less).
 #[inline(always)]
-fn cast_face_ray<R: Real, S: SupportMap<R> + ?Sized>(
-    shape: &S,
-    origin: V2<R>,
-    direction: V2<R>,
-    max: R,
-    rounded_reference: V2<R>,
-) -> Option<RayCast<R>> {
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    if Pair::<R, S, S>::shapes_known() {
-        if let Some(polygon) = shape.small_polygon() {
-            let rounding = crate::polytope::FaceRounding::new(origin, rounded_reference, shape.bounding_radius());
-            return Some(crate::polytope::cast_ray_small_polygon(polygon.vertices, origin, direction, max, rounding));
-        }
-    }
-    #[cfg(any(target_os = "none", target_family = "wasm"))]
-    let _ = rounded_reference;
-    shape.cast_local_face_ray(origin.to_glam(), direction.to_glam(), max)
+fn world_hit<R: Real>(ray: &Ray<R>, t: R, normal: V2<R>, error_bound: R) -> RayHit<R> {
+    RayHit { distance: t, point: (ray.origin + ray.direction * t).to_glam(), normal: normal.to_glam(), error_bound }
 }
 
 /// A disk in the shape's frame: its center relative to the reference
@@ -1139,12 +1145,19 @@ fn hit_error_bound<R: Real>(gap: R, t: R, cos: R, origin: V2<R>, reference: V2<R
 /// normal does. A face too small to have a normal gets the ray's reverse,
 /// as the local cast's does.
 #[inline(always)]
-fn face_hit_world<R: Real>(m: V2<R>, d: V2<R>, h: &RayHit<R>, origin: V2<R>, reference: V2<R>, size: R) -> (V2<R>, R) {
+fn face_hit_world<R: Real>(
+    m: V2<R>,
+    d: V2<R>,
+    (t, late): (R, R),
+    origin: V2<R>,
+    reference: V2<R>,
+    size: R,
+) -> (V2<R>, R) {
     let ((length, unit), m) = match m.try_length_and_unit() {
         Some(normal) => (normal, m),
         None => ((R::ONE, -d), -d),
     };
-    let (eps, t, late) = (R::EPSILON, h.distance, h.error_bound);
+    let eps = R::EPSILON;
     let c = m.dot(d).abs();
     let across = late * c + R::from_u32(8) * eps * (origin.l1() + reference.l1() + size + t) * length;
     let cap = t + R::TWO * size + late;

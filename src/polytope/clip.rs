@@ -24,7 +24,7 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     d: V2<R>,
     max: R,
     rounding: FaceRounding<R>,
-) -> RayCast<R> {
+) -> FaceCast<R> {
     const M: usize = SMALL_POLYGON_MAX;
     let n = vertices.len().min(M);
     let first = vertices.first().copied().unwrap_or_default();
@@ -75,14 +75,45 @@ pub(crate) fn cast_ray_small_polygon<R: Real>(
     // A subnormal denominator (a ray parallel to a face to rounding) sends t
     // to infinity: no entry, a miss.
     if parallel_outside | (exit < t) | !t.is_finite() {
-        return RayCast::closed_form(RayOutcome::Miss);
+        return FaceCast::none(FaceVerdict::Miss);
     }
     if !entered {
-        return RayCast::closed_form(RayOutcome::Inside);
+        return FaceCast::none(FaceVerdict::Inside);
     }
     let normal = (next[entry] - v[entry]).perp_cw();
     let late = rounding.late(t, inner, inner_parallel_outside, latest_exit);
-    RayCast::closed_form(edge_hit(&v[..n], entry, (o, d), (t, exit), normal, late, rounding))
+    let t = edge_hit(&v[..n], entry, (o, d), (t, exit), rounding);
+    FaceCast { verdict: FaceVerdict::Hit, t, normal, late }
+}
+
+/// A cast in face form as plain numbers: a caller keeps them in
+/// registers, where a [`RayOutcome`] with its payload was built in memory
+/// and read back before it had been written out (a store the load could
+/// not forward).
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[derive(Clone, Copy)]
+pub(crate) struct FaceCast<R> {
+    pub verdict: FaceVerdict,
+    /// Along the ray, and the entered face's outward normal (not unit) and
+    /// how much later an exact ray may enter: zero but for a hit.
+    pub t: R,
+    pub normal: V2<R>,
+    pub late: R,
+}
+
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum FaceVerdict {
+    Hit,
+    Miss,
+    Inside,
+}
+
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+impl<R: Real> FaceCast<R> {
+    fn none(verdict: FaceVerdict) -> Self {
+        Self { verdict, t: R::ZERO, normal: V2::zero(), late: R::ZERO }
+    }
 }
 
 /// The lane of the latest entry: the one a scan from lane 0 keeps, taking
@@ -103,8 +134,8 @@ fn latest_entry<R: Real>(lower: &[R; SMALL_POLYGON_MAX]) -> usize {
     super::first_max(&ranked)
 }
 
-/// The hit at `t` through edge `i` (from vertex `i` to the next), or at an
-/// end of the edge where rounding put the ray's point past one: a ray
+/// The distance of the hit at `t` through edge `i` (from vertex `i` to the
+/// next), or of an end of the edge where rounding put the ray's point past one: a ray
 /// along a neighbouring face, outside it by less than rounding, crosses
 /// this edge's line beyond the vertex they share, by the miss over the sine
 /// of their angle, which is far off the polygon for a sliver. The end's own
@@ -120,12 +151,10 @@ fn edge_hit<R: Real>(
     i: usize,
     (o, d): (V2<R>, V2<R>),
     (t, exit): (R, R),
-    normal: V2<R>,
-    late: R,
     rounding: FaceRounding<R>,
-) -> RayOutcome<R> {
+) -> R {
     if let Some(first) = along_edge(vertices, i, (o, d), rounding.on_line()).filter(|&first| first < t) {
-        return gap_hit(o, d, first.max(R::ZERO).min(exit), normal, late);
+        return first.max(R::ZERO).min(exit);
     }
     let n = vertices.len();
     let p = o + d * t;
@@ -149,8 +178,7 @@ fn edge_hit<R: Real>(
         }
         k = wrap(k + step, n);
     }
-    let t = end.map_or(t, |end| (end - o).dot(d).max(R::ZERO).min(exit));
-    gap_hit(o, d, t, normal, late)
+    end.map_or(t, |end| (end - o).dot(d).max(R::ZERO).min(exit))
 }
 
 /// Where a ray that runs along edge `i` (both its ends within `reach` of
@@ -500,7 +528,8 @@ impl<R: Real> Clip<R> {
             Some((edge, normal)) => {
                 let t = self.span.lower;
                 let late = self.rounding.late(t, self.inner, self.inner_empty, self.outer_exit);
-                edge_hit(vertices, edge, (self.o, self.d), (t, self.span.upper), normal, late, self.rounding)
+                let t = edge_hit(vertices, edge, (self.o, self.d), (t, self.span.upper), self.rounding);
+                gap_hit(self.o, self.d, t, normal, late)
             }
         })
     }

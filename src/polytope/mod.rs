@@ -7,9 +7,9 @@
 
 mod clip;
 
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-pub(crate) use clip::cast_ray_small_polygon;
 pub(crate) use clip::{cast_ray_many_sided, cast_ray_polygon, face_cast_to_local, FaceRounding};
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) use clip::{cast_ray_small_polygon, FaceVerdict};
 
 use crate::real::{Real, V2};
 
