@@ -174,6 +174,9 @@ impl<R: Real, P> Gjk<R, P> {
         if pair.inner_disks_overlap() {
             return None;
         }
+        // GJK's first supports scan both polygons whole.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        pair.prefetch_scanned_cores();
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
             if let Some(beyond) = crate::point_polygon::beyond(polygon, p) {

@@ -342,18 +342,28 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn scanned_square(&self, u: V2<R>) -> Option<[MinkowskiVertex<R>; 4]> {
-        // Both asked first, so that neither pass is taken for nothing.
-        let one_pass =
-            |(a, b): &(&[V2<R>], &[V2<R>])| squares_in_one_pass::<R>(a.len()) && squares_in_one_pass::<R>(b.len());
-        let (a, b) = self.polygon_cores().filter(one_pass)?;
-        // Both polygons' lines asked for before either pass waits on them.
-        crate::polytope::prefetch_all(a);
-        crate::polytope::prefetch_all(b);
+        let (a, b) = self.prefetch_scanned_cores()?;
         let turned = u.perp();
         // A's supports are along the reverse directions, B's in its frame.
         let ia = R::extreme_dots(a, -u, -turned)?;
         let ib = R::extreme_dots(b, self.inverse_rotate(u), self.inverse_rotate(turned))?;
         Some(core::array::from_fn(|k| self.vertex_of((ia[k], at(a, ia[k])), (ib[k], at(b, ib[k])))))
+    }
+
+    /// Both polygon cores, where each is scanned in SIMD whole
+    /// ([`squares_in_one_pass`]), with every line of both asked for at once:
+    /// read in turn, the second scan's first line would wait for the first
+    /// scan's memory.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn prefetch_scanned_cores(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
+        // Both asked first, so that neither polygon is asked for nothing.
+        let one_pass =
+            |(a, b): &(&[V2<R>], &[V2<R>])| squares_in_one_pass::<R>(a.len()) && squares_in_one_pass::<R>(b.len());
+        let (a, b) = self.polygon_cores().filter(one_pass)?;
+        crate::polytope::prefetch_all(a);
+        crate::polytope::prefetch_all(b);
+        Some((a, b))
     }
 
     /// The two cores as small polygons (of at most [`SMALL_POLYGON_MAX`]
