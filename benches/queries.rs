@@ -11,6 +11,7 @@
 //! GJK2D_BENCH_PASSES=31 cargo bench --bench queries
 //! cargo bench --bench queries -- warm        # warm-started queries against cold, step by step
 //! cargo bench --bench queries -- warm penetration   # one warm-started query only
+//! cargo bench --bench queries -- warm_poly64  # the same of 64-gons, whose cold queries iterate
 //! ```
 //!
 //! The four contenders (gjk2d and parry2d, f32 and f64) take turns within every
@@ -389,19 +390,19 @@ parry_side!(parry64, parry2d_f64, f64);
 
 // --- warm starting ---------------------------------------------------------------
 
-/// A pair of 8-gons in motion, step by step: each shape (about 1 across, its
-/// semi-axes 0.5 to 1) moves by at most 1% of that and turns by at most 1
-/// degree a step. Poses as (x, y, angle), in f64.
+/// A pair of polygons in motion, step by step: each shape (about 1 across,
+/// its semi-axes 0.5 to 1) moves by at most 1% of that and turns by at most
+/// 1 degree a step. Poses as (x, y, angle), in f64.
 struct Moving {
     shapes: (Sh, Sh),
     poses: [[f64; 3]; 2],
 }
 
-fn moving_pairs(seed: u64, count: usize) -> (Vec<Moving>, Rng) {
+fn moving_pairs(seed: u64, count: usize, vertices: usize) -> (Vec<Moving>, Rng) {
     let mut rng = Rng(seed);
     let pairs = (0..count)
         .map(|_| {
-            let (a, b) = (poly(&mut rng, 8, [0.0, 0.0]), poly(&mut rng, 8, [0.0, 0.0]));
+            let (a, b) = (poly(&mut rng, vertices, [0.0, 0.0]), poly(&mut rng, vertices, [0.0, 0.0]));
             let (d, t) = (rng.range(0.4, 1.6), rng.range(0.0, 6.3));
             let poses = [[0.0, 0.0, rng.range(0.0, 6.3)], [d * t.cos(), d * t.sin(), rng.range(0.0, 6.3)]];
             Moving { shapes: (a, b), poses }
@@ -424,18 +425,18 @@ fn step(pairs: &mut [Moving], rng: &mut Rng) {
 }
 
 /// The shapes, their transforms this step, and the pair's cache.
-struct Warm<R: Real> {
-    a: Box<Polygon<R, 8>>,
-    b: Box<Polygon<R, 8>>,
+struct Warm<R: Real, const N: usize> {
+    a: Box<Polygon<R, N>>,
+    b: Box<Polygon<R, N>>,
     ta: Transform<R>,
     tb: Transform<R>,
     cache: PairCache<R>,
 }
 
-fn warm_pairs<R: Real>(pairs: &[Moving]) -> Vec<Warm<R>> {
-    let poly = |s: &Sh| match g::<R, 8>(s) {
+fn warm_pairs<R: Real, const N: usize>(pairs: &[Moving]) -> Vec<Warm<R, N>> {
+    let poly = |s: &Sh| match g::<R, N>(s) {
         G::P(p) => p,
-        _ => unreachable!("8-gons only"),
+        _ => unreachable!("polygons only"),
     };
     pairs
         .iter()
@@ -449,7 +450,7 @@ fn warm_pairs<R: Real>(pairs: &[Moving]) -> Vec<Warm<R>> {
         .collect()
 }
 
-fn place<R: Real>(warm: &mut [Warm<R>], pairs: &[Moving]) {
+fn place<R: Real, const N: usize>(warm: &mut [Warm<R, N>], pairs: &[Moving]) {
     let t = |p: &[f64; 3]| Transform::new(R::vector(R::from_f64(p[0]), R::from_f64(p[1])), R::from_f64(p[2])).unwrap();
     for (w, m) in warm.iter_mut().zip(pairs) {
         (w.ta, w.tb) = (t(&m.poses[0]), t(&m.poses[1]));
@@ -459,7 +460,7 @@ fn place<R: Real>(warm: &mut [Warm<R>], pairs: &[Moving]) {
 /// One query of every pair, cold or warm started from (and updating) its
 /// cache: the sum of the iterations and the number of answers (an answer of
 /// `None` has no iterations to count).
-fn warm_pass<R: Real>(warm: &mut [Warm<R>], q: Query, cached: bool) -> (u64, u64) {
+fn warm_pass<R: Real, const N: usize>(warm: &mut [Warm<R, N>], q: Query, cached: bool) -> (u64, u64) {
     let gjk = Gjk::<R>::new();
     let (mut iterations, mut answers) = (0u64, 0u64);
     for w in warm.iter_mut() {
@@ -491,8 +492,8 @@ fn warm_pass<R: Real>(warm: &mut [Warm<R>], q: Query, cached: bool) -> (u64, u64
 /// pair once (as every family: too many for the branch predictor to learn). Rows: ns per query (median over
 /// steps), cached / cold (median of per-step ratios), and the mean
 /// iterations of each (an answer of `None` counts none).
-fn warm_family(name: &str, passes: usize, words: &[String]) {
-    println!("\n{name}: {CASES} pairs of 8-gons, each shape moved by at most 1% of its size and turned by at most 1 degree a step, {passes} steps after one untimed");
+fn warm_family<const N: usize>(name: &str, passes: usize, words: &[String]) {
+    println!("\n{name}: {CASES} pairs of {N}-gons, each shape moved by at most 1% of its size and turned by at most 1 degree a step, {passes} steps after one untimed");
     println!("| query | cold f32 ns | cached f32 ns | cached/cold f32 | iterations cold/cached f32 | cold f64 ns | cached f64 ns | cached/cold f64 | iterations cold/cached f64 |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     let queries = [
@@ -508,8 +509,8 @@ fn warm_family(name: &str, passes: usize, words: &[String]) {
         if some_named && !named(qn) {
             continue;
         }
-        let (mut pairs, mut rng) = moving_pairs(21, CASES);
-        let (mut w32, mut w64) = (warm_pairs::<f32>(&pairs), warm_pairs::<f64>(&pairs));
+        let (mut pairs, mut rng) = moving_pairs(21, CASES, N);
+        let (mut w32, mut w64) = (warm_pairs::<f32, N>(&pairs), warm_pairs::<f64, N>(&pairs));
         // Per contender (cold f32, cached f32, cold f64, cached f64): times and iterations.
         let mut times = vec![Vec::new(); 4];
         let mut iterations = [(0u64, 0u64); 4];
@@ -789,7 +790,11 @@ fn main() {
         toi_family::<8>("toi_poly8_capsule", &tois(16, CASES, &p8, &capsule), passes, &mut rows);
     }
     if wanted("warm_poly8") {
-        warm_family("warm_poly8", passes, &words);
+        warm_family::<8>("warm_poly8", passes, &words);
+    }
+    // Where the cold queries iterate (GJK, EPA), not closed forms as for 8-gons.
+    if wanted("warm_poly64") {
+        warm_family::<64>("warm_poly64", passes, &words);
     }
     let slower: Vec<String> = rows
         .iter()

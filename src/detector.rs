@@ -296,9 +296,11 @@ impl<R: Real, P> Gjk<R, P> {
                     None => {}
                 }
                 // Counted as one iteration: the four supports are one round.
-                match crate::quad_start::quad_start(pair) {
+                match crate::quad_start::quad_start(pair, pair.along_last_normal) {
                     QuadStart::Apart => return None,
-                    QuadStart::Enclosing(ref quad) => return Some(solved_from(&self.solver, pair, quad, || 1)),
+                    QuadStart::Enclosing(ref start) => {
+                        return Some(solved_from(&self.solver, pair, start.points(), || 1))
+                    }
                     QuadStart::Undecided => {}
                 }
             }
@@ -520,8 +522,8 @@ impl<R: Real, P> Gjk<R, P> {
         // supports, where they enclose the origin (by far more than
         // rounding, so again GJK need not run).
         if let Some(None) = axes {
-            if let QuadStart::Enclosing(ref quad) = crate::quad_start::quad_start(&pair) {
-                return Some(overlapping(solved_from(&self.solver, &pair, quad, || 1)));
+            if let QuadStart::Enclosing(ref start) = crate::quad_start::quad_start(&pair, pair.along_last_normal) {
+                return Some(overlapping(solved_from(&self.solver, &pair, start.points(), || 1)));
             }
         }
         match core_contact(&pair, self.config.max_distance_iterations(), self.config.distance_epsilon()) {
@@ -1041,6 +1043,10 @@ where
 {
     if let Some(d) = cache.first_direction() {
         pair.first_direction = d;
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        {
+            pair.along_last_normal = true;
+        }
     }
     let found = query(&pair);
     if let Some(found) = &found {

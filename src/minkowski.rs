@@ -92,6 +92,9 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     /// GJK's first search direction, from A's center towards B's, chosen
     /// here once, not in an inlined copy in each GJK loop.
     pub first_direction: V2<R>,
+    /// Whether `first_direction` is the last step's normal (a warm start).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    pub along_last_normal: bool,
     /// A's placement, for answers in world coordinates.
     frame: &'s Transform<R>,
     reference_a: V2<R>,
@@ -119,6 +122,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             offset: V2::zero(),
             centers: V2::zero(),
             first_direction: V2::zero(),
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            along_last_normal: false,
             frame: ta,
             reference_a,
             hint_a: Cell::new(NO_ID),
@@ -348,6 +353,47 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let ia = R::extreme_dots(a, -u, -turned)?;
         let ib = R::extreme_dots(b, self.inverse_rotate(u), self.inverse_rotate(turned))?;
         Some(core::array::from_fn(|k| self.vertex_of((ia[k], at(a, ia[k])), (ib[k], at(b, ib[k])))))
+    }
+
+    /// The vertices of B - A just before and just after its vertex `v` (of
+    /// two polygon cores, by `v`'s ids), counter-clockwise: of the two
+    /// edges that could leave a vertex (B's, or A's reversed), the one that
+    /// turns first, as in the merge of two convex polygons' edges. Any pair
+    /// of vertex ids is a point of B - A, so a wrong guess (ids from another
+    /// pair) is only a point that is no neighbour.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn neighbours(&self, v: &MinkowskiVertex<R>) -> Option<[MinkowskiVertex<R>; 2]> {
+        let (a, b) = self.polygon_cores()?;
+        let (ia, ib) = ((v.id >> 16) as usize, (v.id & 0xFFFF) as usize);
+        let (n, m) = (a.len(), b.len());
+        if v.id == NO_ID || ia >= n || ib >= m {
+            return None;
+        }
+        let (next_a, prev_a) = (if ia + 1 == n { 0 } else { ia + 1 }, if ia == 0 { n - 1 } else { ia - 1 });
+        let (next_b, prev_b) = (if ib + 1 == m { 0 } else { ib + 1 }, if ib == 0 { m - 1 } else { ib - 1 });
+        // B's edges placed (the offset cancels), A's reversed.
+        let edge_b = |from: usize, to: usize| self.rotate(at(b, to) - at(b, from));
+        let edge_a = |from: usize, to: usize| at(a, from) - at(a, to);
+        // B's edge first where A's turns further (counter-clockwise of it);
+        // parallel edges are taken together.
+        let pick = |turn: R, of_b: (usize, usize), of_a: (usize, usize), both: (usize, usize)| {
+            if turn > R::ZERO {
+                of_b
+            } else if turn < R::ZERO {
+                of_a
+            } else {
+                both
+            }
+        };
+        let ahead = edge_b(ib, next_b).cross(edge_a(ia, next_a));
+        let (na, nb) = pick(ahead, (ia, next_b), (next_a, ib), (next_a, next_b));
+        // Behind: the edge that turns last arrives at `v`, so A's where it
+        // turns further than B's.
+        let behind = edge_b(prev_b, ib).cross(edge_a(prev_a, ia));
+        let (pa, pb) = pick(behind, (prev_a, ib), (ia, prev_b), (prev_a, prev_b));
+        let vertex = |ja: usize, jb: usize| self.vertex_of((ja, at(a, ja)), (jb, at(b, jb)));
+        Some([vertex(pa, pb), vertex(na, nb)])
     }
 
     /// Both polygon cores, where each is scanned in SIMD whole

@@ -18,18 +18,39 @@ pub(crate) enum QuadStart<R: Real> {
     /// penetration (GJK would find the same separating plane or a better one).
     Apart,
     /// The four supports, counter-clockwise, enclose the origin by more than
-    /// rounding: the penetration solver's start.
-    Enclosing([SupportPoint<R>; 4]),
+    /// rounding: the penetration solver's start (with the first one's two
+    /// neighbours, where asked for and they keep it so).
+    Enclosing(Start<R>),
     /// Neither, within rounding: GJK decides.
     Undecided,
+}
+
+/// The solver's start: four supports, or six where the first one's
+/// neighbours are in.
+pub(crate) struct Start<R: Real> {
+    points: [SupportPoint<R>; 6],
+    len: usize,
+}
+
+impl<R: Real> Start<R> {
+    pub fn points(&self) -> &[SupportPoint<R>] {
+        self.points.get(..self.len).unwrap_or_default()
+    }
 }
 
 /// The four supports of the pair's cores and what they decide. Margins of
 /// 64 eps of the coordinates' size (twice each bounding radius about its
 /// reference point, and B's offset): far above the rounding of a support's
 /// dot product or an edge's cross product.
+///
+/// With `around_first`, `u` is the last step's normal: the closest face
+/// then most likely still meets the first support, and the first
+/// support's two neighbours on the boundary join the start, so that the
+/// solver starts with that face among its edges. Along the last normal
+/// exactly, the first support is an end of that face, and without its
+/// neighbours the solver would home in on the face from both sides.
 #[inline(always)]
-pub(crate) fn quad_start<R, A, B>(pair: &Pair<'_, R, A, B>) -> QuadStart<R>
+pub(crate) fn quad_start<R, A, B>(pair: &Pair<'_, R, A, B>, around_first: bool) -> QuadStart<R>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,
@@ -59,7 +80,31 @@ where
         return QuadStart::Undecided;
     }
     let point = |v: &MinkowskiVertex<R>| SupportPoint { point: v.w.to_glam(), id: v.id };
-    QuadStart::Enclosing(quad.each_ref().map(point))
+    let [q0, q1, q2, q3] = quad.each_ref().map(point);
+    if around_first {
+        if let Some([before, after]) = pair.neighbours(&quad[0]) {
+            let six = [before, quad[0], after, quad[1], quad[2], quad[3]];
+            if surely_convex_around_origin(&six.each_ref().map(|v| v.w), margin, size) {
+                return QuadStart::Enclosing(Start { points: six.each_ref().map(point), len: 6 });
+            }
+        }
+    }
+    QuadStart::Enclosing(Start { points: [q0, q1, q2, q3, q0, q0], len: 4 })
+}
+
+/// Whether the polygon `w` is convex, counter-clockwise and around the
+/// origin once, with the origin inside by more than `margin`
+/// ([`surely_encloses`]): every turn left, and one edge only that crosses
+/// the ray from the origin along x (each edge passes the origin counter-
+/// clockwise, so a polygon that went round twice would cross it twice).
+#[inline(always)]
+fn surely_convex_around_origin<R: Real, const K: usize>(w: &[V2<R>; K], margin: R, size: R) -> bool {
+    let (turns_left, crossings) = (0..K).fold((true, 0), |(left, crossings), k| {
+        let (p, q, r) = (w[k], w[(k + 1) % K], w[(k + 2) % K]);
+        let crosses = p.y < R::ZERO && q.y >= R::ZERO;
+        (left & ((q - p).cross(r - q) > R::ZERO), crossings + usize::from(crosses))
+    });
+    turns_left && crossings == 1 && surely_encloses(w, margin, size)
 }
 
 /// Whether the counter-clockwise polygon `w` encloses the origin by more

@@ -42,7 +42,8 @@ fn norm(p: Pt) -> f64 {
 enum Geo {
     /// Up to 8 vertices: the separating-axis paths.
     Small(Vec<Pt>),
-    /// 9 to 32 vertices: GJK and EPA.
+    /// 9 to 64 vertices: GJK and EPA (past 32, EPA from four supports,
+    /// and six where warm started).
     Large(Vec<Pt>),
     Circle(f64),
     Capsule(Pt, Pt, f64),
@@ -91,7 +92,7 @@ fn ellipse_polygon(rng: &mut Rng, count: usize) -> Option<Vec<Pt>> {
 }
 
 fn random_geo(rng: &mut Rng, kind: u64) -> Option<Geo> {
-    let (few, many) = (3 + (rng.next() % 6) as usize, 9 + (rng.next() % 24) as usize);
+    let (few, many) = (3 + (rng.next() % 6) as usize, 9 + (rng.next() % 56) as usize);
     Some(match kind {
         0..=2 => Geo::Small(ellipse_polygon(rng, few)?),
         3 => {
@@ -145,7 +146,7 @@ macro_rules! warm_suite {
             #[allow(clippy::large_enum_variant)]
             enum S {
                 Small(Polygon<R, 8>),
-                Large(Polygon<R, 32>),
+                Large(Polygon<R, 64>),
                 Circle(Circle<R>),
                 Capsule(Capsule<R>),
                 Rounded(Rounded<R, Polygon<R, 8>>),
