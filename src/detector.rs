@@ -628,8 +628,8 @@ impl<R: Real, P> Gjk<R, P> {
     /// the cold query's, from the cached axis or triangle where either
     /// still decides; apart, the distance is read off the cached axis where
     /// its edge and nearest vertex are still the closest features, else GJK
-    /// starts from the last simplex, its points measured again. Other
-    /// shapes start GJK along the last normal.
+    /// starts from the last simplex, its points measured again, as it does
+    /// for larger polygons. Other shapes start GJK along the last normal.
     pub fn distance_cached<A, B>(
         &self,
         a: &A,
@@ -657,21 +657,54 @@ impl<R: Real, P> Gjk<R, P> {
                 Some(Some(found)) => return Some(closed_form_separation(&pair, found)),
                 Some(None) => {}
             }
-            let start = cache.simplex(&pair, pa, pb);
-            let mut simplex = None::<Simplex<R, Witness<R>>>;
-            let (max, epsilon) = (self.config.max_distance_iterations(), self.config.distance_epsilon());
-            return match crate::gjk::distance_loop_from(&pair, &mut simplex, start, max, epsilon) {
-                CoreProximity::Overlapping { simplex, .. } => {
-                    cache.remember_simplex(simplex);
-                    None
-                }
-                CoreProximity::Separated(ref core) => {
-                    cache.remember_simplex(core.simplex);
-                    separation(&pair, core)
-                }
-            };
+            return self.distance_from_cached_simplex(&pair, (pa, pb), cache);
+        }
+        // Larger polygons: GJK from the last simplex as well, where the
+        // last normal would only save its first support or two.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((pa, pb)) = pair.polygon_cores() {
+            if pair.inner_disks_overlap() {
+                return None;
+            }
+            pair.prefetch_scanned_cores();
+            let found = self.distance_from_cached_simplex(&pair, (pa, pb), cache);
+            if let Some(s) = &found {
+                // For a penetration query sharing the cache.
+                cache.remember_normal(ta.inverse_rotate(V2::from_glam(s.normal)));
+            }
+            return found;
         }
         along_last_normal(pair, ta, cache, |pair| self.distance_of(pair), |s| s.normal)
+    }
+
+    /// GJK's distance loop of two polygon cores from the cached simplex,
+    /// its points measured again (a cold start where the cache holds none
+    /// that fits), and its last simplex kept for the next step.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn distance_from_cached_simplex<A, B>(
+        &self,
+        pair: &Pair<'_, R, A, B>,
+        (pa, pb): (&[V2<R>], &[V2<R>]),
+        cache: &mut PairCache<R>,
+    ) -> Option<Separation<R>>
+    where
+        A: SupportMap<R> + ?Sized,
+        B: SupportMap<R> + ?Sized,
+    {
+        let start = cache.simplex(pair, pa, pb);
+        let mut simplex = None::<Simplex<R, Witness<R>>>;
+        let (max, epsilon) = (self.config.max_distance_iterations(), self.config.distance_epsilon());
+        match crate::gjk::distance_loop_from(pair, &mut simplex, start, max, epsilon) {
+            CoreProximity::Overlapping { simplex, .. } => {
+                cache.remember_simplex(simplex);
+                None
+            }
+            CoreProximity::Separated(ref core) => {
+                cache.remember_simplex(core.simplex);
+                separation(pair, core)
+            }
+        }
     }
 
     /// [`penetration`](Self::penetration), warm started from `cache` and
@@ -681,7 +714,8 @@ impl<R: Real, P> Gjk<R, P> {
     /// in f32 without SIMD), from the last few leading axes alone while the
     /// motion since cannot have let another catch up (in f32 with SIMD all
     /// sixteen axes cost less than checking that). Other shapes start GJK
-    /// along the last normal.
+    /// along the last normal; polygons past the walked axes' 32 vertices
+    /// start EPA there, with the support's neighbours on the boundary.
     pub fn penetration_cached<A, B>(
         &self,
         a: &A,

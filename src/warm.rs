@@ -39,7 +39,7 @@ use crate::real::{Real, V2};
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(any(target_os = "none", target_family = "wasm"), allow(dead_code))]
 pub struct PairCache<R: Real> {
-    /// The last simplex of two small polygons by its support ids (A's
+    /// The last simplex of two polygons by its support ids (A's
     /// vertex in the high 16 bits, B's in the low), [`NO_ID`] in empty slots.
     ids: [u32; 3],
     /// The axis that last separated two small polygons (A's edges, then
@@ -497,7 +497,7 @@ mod small {
             Some(found(answer, 1))
         }
 
-        /// The cached simplex of two small polygons, its points measured
+        /// The cached simplex of two polygons, its points measured
         /// now: GJK's start. `None` when the cache holds none or an id is
         /// out of range.
         pub(crate) fn simplex<A, B, P>(
