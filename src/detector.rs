@@ -296,7 +296,7 @@ impl<R: Real, P> Gjk<R, P> {
                     None => {}
                 }
                 // Counted as one iteration: the four supports are one round.
-                match crate::quad_start::quad_start(pair, pair.along_last_normal) {
+                match crate::quad_start::quad_start(pair) {
                     QuadStart::Apart => return None,
                     QuadStart::Enclosing(ref start) => {
                         return Some(solved_from(&self.solver, pair, start.points(), || 1))
@@ -522,7 +522,7 @@ impl<R: Real, P> Gjk<R, P> {
         // supports, where they enclose the origin (by far more than
         // rounding, so again GJK need not run).
         if let Some(None) = axes {
-            if let QuadStart::Enclosing(ref start) = crate::quad_start::quad_start(&pair, pair.along_last_normal) {
+            if let QuadStart::Enclosing(ref start) = crate::quad_start::quad_start(&pair) {
                 return Some(overlapping(solved_from(&self.solver, &pair, start.points(), || 1)));
             }
         }

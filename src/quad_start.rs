@@ -43,14 +43,14 @@ impl<R: Real> Start<R> {
 /// reference point, and B's offset): far above the rounding of a support's
 /// dot product or an edge's cross product.
 ///
-/// With `around_first`, `u` is the last step's normal: the closest face
+/// Where the pair's `u` is the last step's normal (a warm start): the closest face
 /// then most likely still meets the first support, and the first
 /// support's two neighbours on the boundary join the start, so that the
 /// solver starts with that face among its edges. Along the last normal
 /// exactly, the first support is an end of that face, and without its
 /// neighbours the solver would home in on the face from both sides.
 #[inline(always)]
-pub(crate) fn quad_start<R, A, B>(pair: &Pair<'_, R, A, B>, around_first: bool) -> QuadStart<R>
+pub(crate) fn quad_start<R, A, B>(pair: &Pair<'_, R, A, B>) -> QuadStart<R>
 where
     R: Real,
     A: SupportMap<R> + ?Sized,
@@ -81,7 +81,7 @@ where
     }
     let point = |v: &MinkowskiVertex<R>| SupportPoint { point: v.w.to_glam(), id: v.id };
     let [q0, q1, q2, q3] = quad.each_ref().map(point);
-    if around_first {
+    if pair.along_last_normal {
         if let Some([before, after]) = pair.neighbours(&quad[0]) {
             let six = [before, quad[0], after, quad[1], quad[2], quad[3]];
             if surely_convex_around_origin(&six.each_ref().map(|v| v.w), margin, size) {
