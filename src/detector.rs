@@ -812,25 +812,12 @@ impl<R: Real, P> Gjk<R, P> {
             crate::polytope::prefetch_small(shape);
         }
         let max = if max_length > R::ZERO { max_length } else { R::INFINITY };
-        let reference = V2::from_glam(shape.reference_point());
-        // Into the shape's frame, relative to its reference point: the
-        // difference first, so a ray near a far-away shape keeps its precision.
-        #[cfg_attr(not(feature = "far-geometry"), allow(unused_mut))]
-        let (mut origin, mut rounded_reference) =
-            (transform.inverse_rotate(ray.origin - transform.translation) - reference, reference);
-        // Geometry far from its local origin, placed: that difference rounds
-        // at the reference's distance; the origin's gap to the placed
-        // reference, summed error-free, does not. (Not placed, it is one
-        // difference, rounded at the origin's scale.)
-        #[cfg(feature = "far-geometry")]
-        if shape.far_from_origin() {
-            if !transform.is_identity() {
-                let gap = crate::compensated::placed_gap(transform, reference, &Transform::IDENTITY, ray.origin);
-                origin = transform.inverse_rotate(gap);
-            }
-            rounded_reference = V2::zero();
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some(radius) = shape.disk_radius().filter(|_| self.closed_form_rays) {
+            return cast_ray_disk_scalar(ray, max, shape, transform, radius);
         }
-        let direction = transform.inverse_rotate(ray.direction);
+        let (origin, rounded_reference, direction) = local_ray(ray, shape, transform);
+        #[cfg(any(target_os = "none", target_family = "wasm"))]
         if let Some(radius) = shape.disk_radius().filter(|_| self.closed_form_rays) {
             let disk = Disk { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() };
             return disk.cast_placed(ray, max, origin, direction, rounded_reference);
@@ -1119,6 +1106,53 @@ fn in_own_frame<T>(f: impl FnOnce() -> T) -> T {
 #[inline(always)]
 fn world_hit<R: Real>(ray: &Ray<R>, t: R, normal: V2<R>, error_bound: R) -> RayHit<R> {
     RayHit { distance: t, point: (ray.origin + ray.direction * t).to_glam(), normal: normal.to_glam(), error_bound }
+}
+
+/// The ray in the shape's frame: its origin relative to the shape's
+/// reference point, that reference as it rounded into the origin (zero
+/// where far geometry sums the gap error-free), and its direction.
+#[inline(always)]
+fn local_ray<R, S>(ray: &Ray<R>, shape: &S, transform: &Transform<R>) -> (V2<R>, V2<R>, V2<R>)
+where
+    R: Real,
+    S: SupportMap<R> + ?Sized,
+{
+    let reference = V2::from_glam(shape.reference_point());
+    // Into the shape's frame, relative to its reference point: the
+    // difference first, so a ray near a far-away shape keeps its precision.
+    #[cfg_attr(not(feature = "far-geometry"), allow(unused_mut))]
+    let (mut origin, mut rounded_reference) =
+        (transform.inverse_rotate(ray.origin - transform.translation) - reference, reference);
+    // Geometry far from its local origin, placed: that difference rounds
+    // at the reference's distance; the origin's gap to the placed
+    // reference, summed error-free, does not. (Not placed, it is one
+    // difference, rounded at the origin's scale.)
+    #[cfg(feature = "far-geometry")]
+    if shape.far_from_origin() {
+        if !transform.is_identity() {
+            let gap = crate::compensated::placed_gap(transform, reference, &Transform::IDENTITY, ray.origin);
+            origin = transform.inverse_rotate(gap);
+        }
+        rounded_reference = V2::zero();
+    }
+    (origin, rounded_reference, transform.inverse_rotate(ray.direction))
+}
+
+/// A ray against a disk on hosts, where the closed form is short and
+/// scalar: packed into vector registers, its rotations and cross products
+/// cost more in shuffles than in arithmetic, so its numbers pass the scalar
+/// barrier.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn cast_ray_disk_scalar<R, S>(ray: &Ray<R>, max: R, shape: &S, transform: &Transform<R>, radius: R) -> RayCast<R>
+where
+    R: Real,
+    S: SupportMap<R> + ?Sized,
+{
+    let (ray, transform) = (&ray.scalar_barrier(), &transform.scalar_barrier());
+    let (origin, reference, direction) = local_ray(ray, shape, transform);
+    let disk = Disk { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() };
+    disk.cast_placed(ray, max, origin.scalar_barrier(), direction.scalar_barrier(), reference)
 }
 
 /// A disk in the shape's frame: its center relative to the reference

@@ -20,6 +20,12 @@ pub struct Ray<R: Real> {
 }
 
 impl<R: Real> Ray<R> {
+    /// Both vectors through [`Real`]'s scalar barrier.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub(crate) fn scalar_barrier(&self) -> Self {
+        Self { origin: self.origin.scalar_barrier(), direction: self.direction.scalar_barrier() }
+    }
     /// A ray from `origin` along `direction`, which is normalised and must
     /// be finite and non-zero.
     pub fn new(origin: R::Vector, direction: R::Vector) -> Result<Self, Error> {

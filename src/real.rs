@@ -105,6 +105,20 @@ mod sealed {
             false
         }
 
+        /// The value as it is, through a piece of assembly that is empty
+        /// where the target has it (x86-64): the compiler cannot see through
+        /// it, so its SLP vectorizer does not pack a point's two
+        /// coordinates into one register across it, only to shuffle them
+        /// apart again for every cross term of a rotation or a cross
+        /// product, which costs a short closed form more than its arithmetic.
+        #[inline(always)]
+        fn scalar_barrier(self) -> Self
+        where
+            Self: Sized,
+        {
+            self
+        }
+
         /// A point's coordinates as one 64-bit word for a fingerprint: both
         /// bit patterns side by side in f32; in f64 the second turned by 29
         /// bits onto the first.
@@ -127,6 +141,11 @@ mod sealed {
         #[inline(always)]
         fn per_type<W: super::PerType>(input: W::Input<'_, f32>) -> W::Output<f32> {
             W::f32(input)
+        }
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn scalar_barrier(self) -> f32 {
+            super::sse2::scalar_barrier_f32(self)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
@@ -165,6 +184,11 @@ mod sealed {
         #[inline(always)]
         fn per_type<W: super::PerType>(input: W::Input<'_, f64>) -> W::Output<f64> {
             W::f64(input)
+        }
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        #[inline(always)]
+        fn scalar_barrier(self) -> f64 {
+            super::sse2::scalar_barrier_f64(self)
         }
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         #[inline(always)]
@@ -208,6 +232,21 @@ pub(crate) use sse2::run_wide;
 mod sse2 {
     use super::V2;
     use core::arch::x86_64::*;
+
+    #[inline(always)]
+    pub fn scalar_barrier_f32(mut x: f32) -> f32 {
+        // SAFETY: the assembly is empty: it reads, writes and jumps nowhere,
+        // and leaves the register that holds `x` as it found it.
+        unsafe { core::arch::asm!("/* {0} */", inout(xmm_reg) x, options(pure, nomem, nostack, preserves_flags)) };
+        x
+    }
+
+    #[inline(always)]
+    pub fn scalar_barrier_f64(mut x: f64) -> f64 {
+        // SAFETY: as above.
+        unsafe { core::arch::asm!("/* {0} */", inout(xmm_reg) x, options(pure, nomem, nostack, preserves_flags)) };
+        x
+    }
 
     /// The first lane set in `mask`, or 0 if none is (never, for finite dots).
     #[inline(always)]
@@ -1054,6 +1093,11 @@ impl<R: Real> V2<R> {
     #[inline(always)]
     pub const fn new(x: R, y: R) -> Self {
         Self { x, y }
+    }
+    /// Both coordinates through [`Real`]'s scalar barrier.
+    #[inline(always)]
+    pub fn scalar_barrier(self) -> Self {
+        Self::new(self.x.scalar_barrier(), self.y.scalar_barrier())
     }
     #[inline(always)]
     pub fn zero() -> Self {

@@ -88,6 +88,16 @@ impl<R: Real> Transform<R> {
         self.inverse_rotate(V2::from_glam(p) - self.translation).to_glam()
     }
 
+    /// Every number through [`Real`]'s scalar barrier.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub(crate) fn scalar_barrier(&self) -> Self {
+        Self {
+            translation: self.translation.scalar_barrier(),
+            cos: self.cos.scalar_barrier(),
+            sin: self.sin.scalar_barrier(),
+        }
+    }
     #[inline(always)]
     pub(crate) fn rotate(&self, v: V2<R>) -> V2<R> {
         V2::new(self.cos * v.x - self.sin * v.y, self.sin * v.x + self.cos * v.y)
