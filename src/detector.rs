@@ -819,8 +819,7 @@ impl<R: Real, P> Gjk<R, P> {
         let (origin, rounded_reference, direction) = local_ray(ray, shape, transform);
         #[cfg(any(target_os = "none", target_family = "wasm"))]
         if let Some(radius) = shape.disk_radius().filter(|_| self.closed_form_rays) {
-            let disk = Disk { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() };
-            return disk.cast_placed(ray, max, origin, direction, rounded_reference);
+            return Disk::of(shape, radius).cast_placed(ray, max, origin, direction, rounded_reference);
         }
         // A polygon's cast in face form, every other shape's in the form of
         // `cast_local_ray` (or by GJK).
@@ -1151,8 +1150,7 @@ where
 {
     let (ray, transform) = (&ray.scalar_barrier(), &transform.scalar_barrier());
     let (origin, reference, direction) = local_ray(ray, shape, transform);
-    let disk = Disk { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() };
-    disk.cast_placed(ray, max, origin.scalar_barrier(), direction.scalar_barrier(), reference)
+    Disk::of(shape, radius).cast_placed(ray, max, origin.scalar_barrier(), direction.scalar_barrier(), reference)
 }
 
 /// A disk in the shape's frame: its center relative to the reference
@@ -1164,6 +1162,12 @@ struct Disk<R: Real> {
 }
 
 impl<R: Real> Disk<R> {
+    /// The disk of a shape whose [`SupportMap::disk_radius`] is `radius`.
+    #[inline(always)]
+    fn of<S: SupportMap<R> + ?Sized>(shape: &S, radius: R) -> Self {
+        Self { center: V2::from_glam(shape.center()), radius, size: shape.bounding_radius() }
+    }
+
     /// A ray against the disk ([`DiskRay`]) on the ray's local origin and
     /// direction, its normal from the ray's world direction, so it needs no
     /// rotation back. On hosts the outcome is picked by selects: which of
