@@ -309,9 +309,12 @@ const ARC_SEARCH_MAX: usize = 128;
 /// directions whose supports were vertices `from` and `to` (as an EPA
 /// polytope's edge normal lies between its ends'): the support is on the
 /// arc from `from` counter-clockwise to `to`, and a search of that arc
-/// alone finds it, in few steps once the arcs are short. A vertex the arc
-/// got wrong (rounding, or hints that are not such a pair) is caught by a
-/// short climb, and the whole polygon is searched.
+/// alone finds it, in few steps once the arcs are short. The arc's edges
+/// rise along `d` and then stop rising (their normals turn by less than a
+/// half turn), so the first that does not rise is halved for, its own
+/// edge and the one before measured as a climb would measure them. At
+/// the arc's ends, or with hints that are not such a pair, a short climb
+/// checks the vertex, and the whole polygon is searched where it fails.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, from: u32, to: u32) -> (usize, V2<R>) {
     let n = vertices.len();
@@ -319,9 +322,15 @@ pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, fr
     let wrap = |i: usize| if i >= n { i - n } else { i };
     let length = (from < n && to < n).then(|| wrap(to + n - from));
     if let Some(length) = length.filter(|&length| n > ARC_SEARCH_MIN && length <= ARC_SEARCH_MAX) {
-        // Measured from the edge into `from`, which `d`'s tangent has passed.
-        let turning = Turning::from(edge_from(vertices, wrap(from + n - 1)), d);
-        let k = first_reached(0, length, |k| !turning.short_of_tangent(edge_from(vertices, wrap(from + k))));
+        // Not rising, NaN too, as the climb stops.
+        let k = first_reached(0, length, |k| {
+            let rises = edge_from(vertices, wrap(from + k)).dot(d) > R::ZERO;
+            !rises
+        });
+        if (1..length).contains(&k) {
+            let top = wrap(from + k);
+            return (top, at(vertices, top));
+        }
         if let (top, true) = hill_climb(vertices, d, wrap(from + k), 2) {
             return (top, at(vertices, top));
         }
