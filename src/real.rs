@@ -557,7 +557,12 @@ mod sse2 {
         let lanes = [top.map(highest), bottom.map(lowest)];
         first_at_extremes((v, 4 * whole), [u, t], lanes, |axis, extreme| {
             let wanted = _mm_set1_ps(extreme);
-            first_match(&kept[axis][..whole], 4, |quad| _mm_movemask_ps(_mm_cmpeq_ps(quad, wanted)))
+            // Every kept register, a fixed count the compiler unrolls with
+            // constant shifts; slots past the vertices' masked off.
+            let bits = kept[axis].iter().enumerate().fold(0u64, |bits, (k, &quad)| {
+                bits | u64::from(_mm_movemask_ps(_mm_cmpeq_ps(quad, wanted)) as u32) << (4 * k)
+            }) & low_bits(4 * whole);
+            (bits != 0).then(|| bits.trailing_zeros() as usize)
         })
     }
 
