@@ -1063,10 +1063,6 @@ where
 {
     if let Some(d) = cache.first_direction() {
         pair.first_direction = d;
-        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        {
-            pair.along_last_normal = true;
-        }
     }
     let found = query(&pair);
     if let Some(found) = &found {

@@ -92,9 +92,6 @@ pub(crate) struct Pair<'s, R: Real, A: ?Sized, B: ?Sized> {
     /// GJK's first search direction, from A's center towards B's, chosen
     /// here once, not in an inlined copy in each GJK loop.
     pub first_direction: V2<R>,
-    /// Whether `first_direction` is the last step's normal (a warm start).
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    pub along_last_normal: bool,
     /// A's placement, for answers in world coordinates.
     frame: &'s Transform<R>,
     reference_a: V2<R>,
@@ -122,8 +119,6 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             offset: V2::zero(),
             centers: V2::zero(),
             first_direction: V2::zero(),
-            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-            along_last_normal: false,
             frame: ta,
             reference_a,
             hint_a: Cell::new(NO_ID),

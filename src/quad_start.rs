@@ -19,7 +19,7 @@ pub(crate) enum QuadStart<R: Real> {
     Apart,
     /// The four supports, counter-clockwise, enclose the origin by more than
     /// rounding: the penetration solver's start (with the first one's two
-    /// neighbours, where asked for and they keep it so).
+    /// neighbours, where they keep it so).
     Enclosing(Start<R>),
     /// Neither, within rounding: GJK decides.
     Undecided,
@@ -43,12 +43,12 @@ impl<R: Real> Start<R> {
 /// reference point, and B's offset): far above the rounding of a support's
 /// dot product or an edge's cross product.
 ///
-/// Where the pair's `u` is the last step's normal (a warm start): the closest face
-/// then most likely still meets the first support, and the first
-/// support's two neighbours on the boundary join the start, so that the
-/// solver starts with that face among its edges. Along the last normal
-/// exactly, the first support is an end of that face, and without its
-/// neighbours the solver would home in on the face from both sides.
+/// The first support's two neighbours on the boundary join the start,
+/// where they keep it convex: two faces of the difference, exact, that the
+/// solver need not find. Where `u` is the last step's normal (a warm
+/// start), the closest face most likely still meets the first support, and
+/// is then among them from the start; without them the solver would home
+/// in on it from both sides. Cold, they save the solver a round on average.
 #[inline(always)]
 pub(crate) fn quad_start<R, A, B>(pair: &Pair<'_, R, A, B>) -> QuadStart<R>
 where
@@ -81,12 +81,10 @@ where
     }
     let point = |v: &MinkowskiVertex<R>| SupportPoint { point: v.w.to_glam(), id: v.id };
     let [q0, q1, q2, q3] = quad.each_ref().map(point);
-    if pair.along_last_normal {
-        if let Some([before, after]) = pair.neighbours(&quad[0]) {
-            let six = [before, quad[0], after, quad[1], quad[2], quad[3]];
-            if surely_convex_around_origin(&six.each_ref().map(|v| v.w), margin, size) {
-                return QuadStart::Enclosing(Start { points: six.each_ref().map(point), len: 6 });
-            }
+    if let Some([before, after]) = pair.neighbours(&quad[0]) {
+        let six = [before, quad[0], after, quad[1], quad[2], quad[3]];
+        if surely_convex_around_origin(&six.each_ref().map(|v| v.w), margin, size) {
+            return QuadStart::Enclosing(Start { points: six.each_ref().map(point), len: 6 });
         }
     }
     QuadStart::Enclosing(Start { points: [q0, q1, q2, q3, q0, q0], len: 4 })
