@@ -11,6 +11,8 @@
 //! cores).
 
 use crate::config::EpaConfig;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::minkowski::WALKED_FACES_MAX;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
 use crate::polytope::cyclic;
 use crate::real::{Real, V2};
@@ -171,6 +173,9 @@ pub(crate) trait Storage<R> {
     /// false when full.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool;
     fn clear_all(&mut self);
+    /// How many more corners fit.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn room(&self) -> usize;
 }
 
 impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
@@ -202,6 +207,10 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     fn clear_all(&mut self) {
         self.clear()
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn room(&self) -> usize {
+        N - self.len()
+    }
 }
 
 /// Moves item `from` to index `to`, the items between shifting by one to
@@ -232,6 +241,10 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
     }
     fn clear_all(&mut self) {
         self.clear()
+    }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    fn room(&self) -> usize {
+        usize::MAX
     }
 }
 
@@ -336,6 +349,42 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         }
         if iterations >= config.max_iterations() {
             break (i, lower, Status::IterationLimit);
+        }
+        // A short stretch of boundary between the edge's ends: taken whole,
+        // every edge of it a face, where a support at a time would split
+        // the edge again and again.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        {
+            let unset = (SupportPoint { point: V2::<R>::zero().to_glam(), id: NO_ID }, V2::<R>::zero().to_glam());
+            let mut faces = [unset; WALKED_FACES_MAX];
+            let room = polytope.room().saturating_add(1).min(WALKED_FACES_MAX);
+            if let Some(count) = difference.faces_between(p.id, q.id, faces.get_mut(..room).unwrap_or_default()) {
+                iterations += 1;
+                // The edge is one face already (parallel edges of both, which
+                // `is_face` does not know): measured along its own normal, it
+                // is the answer where it is still the closest.
+                if let [(_, normal)] = faces.get(..count).unwrap_or_default() {
+                    let normal = V2::from_glam(*normal);
+                    let depth = p.w.dot(normal).max(R::ZERO);
+                    if depth <= lower {
+                        if depth <= upper {
+                            (upper, best) = (depth, normal);
+                        }
+                        break (i, depth, Status::Converged);
+                    }
+                }
+                for (k, (s, _)) in faces.iter().take(count.saturating_sub(1)).enumerate() {
+                    polytope.insert_at(i + 1 + k, corner(s, curved));
+                }
+                let items = polytope.items_mut();
+                for (k, (_, normal)) in faces.iter().take(count).enumerate() {
+                    if let Some(c) = items.get_mut(i + k) {
+                        let normal = V2::from_glam(*normal);
+                        c.set_edge((c.w.dot(normal).max(R::ZERO), normal), curved);
+                    }
+                }
+                continue;
+            }
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         let w = corner(&difference.support_between(normal.to_glam(), p.id, q.id), curved);

@@ -63,6 +63,18 @@ pub trait MinkowskiDifference<R: Real> {
         let _ = (from, to);
         false
     }
+    /// The faces of the difference's boundary from the point of id `from`
+    /// to the point of id `to`, in that order counter-clockwise, written to
+    /// `faces` where they fit: each face's far end and its outward unit
+    /// normal, the last ending at `to`; their number. A solver that has
+    /// found a short stretch of the boundary takes it whole, not a support
+    /// at a time. The normals come from the shapes' own edges: taken from
+    /// two rounded points of the difference, a short edge's would turn
+    /// every way. `None`, the default, is always safe.
+    fn faces_between(&self, from: u32, to: u32, faces: &mut [(SupportPoint<R>, R::Vector)]) -> Option<usize> {
+        let _ = (from, to, faces);
+        None
+    }
     /// The pair's size: the larger bounding radius. Relative tolerances are
     /// multiplied by it.
     fn scale(&self) -> R;
@@ -300,6 +312,66 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         } else {
             false
         }
+    }
+
+    /// [`MinkowskiDifference::faces_between`] for two polygons whose types
+    /// are known when the program is compiled, where at most `room` (and
+    /// [`WALKED_FACES_MAX`]) faces lie between: the merge of their edges,
+    /// walked from `from` as [`neighbours`](Self::neighbours) steps, each
+    /// polygon's index going forwards as far as the ids say. Each face's
+    /// normal is its edge's, turned in the polygon's own frame.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn faces_between(
+        &self,
+        from: u32,
+        to: u32,
+        room: usize,
+        out: &mut [(MinkowskiVertex<R>, V2<R>); WALKED_FACES_MAX],
+    ) -> Option<usize> {
+        let (a, b) = self.polygon_cores()?;
+        let (mut ia, mut ib, ja, jb) =
+            ((from >> 16) as usize, (from & 0xFFFF) as usize, (to >> 16) as usize, (to & 0xFFFF) as usize);
+        let (n, m) = (a.len(), b.len());
+        if from == NO_ID || to == NO_ID || ia >= n || ja >= n || ib >= m || jb >= m {
+            return None;
+        }
+        let steps = |from: usize, to: usize, len: usize| if to >= from { to - from } else { to + len - from };
+        let (mut left_a, mut left_b) = (steps(ia, ja, n), steps(ib, jb, m));
+        // Room for as many faces as the steps (parallel edges, taken
+        // together, make fewer).
+        if !(1..=room.min(WALKED_FACES_MAX)).contains(&(left_a + left_b)) {
+            return None;
+        }
+        let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
+        for (count, slot) in out.iter_mut().enumerate() {
+            // B's edge first where A's (reversed) turns further; parallel
+            // edges together. A polygon with no steps left stays.
+            let (edge_a, edge_b) = (at(a, ia) - at(a, next(ia, n)), self.rotate(at(b, next(ib, m)) - at(b, ib)));
+            let turn = edge_b.cross(edge_a);
+            let (step_a, step_b) = match (left_a, left_b) {
+                // The ids must agree with the merge: a polygon that has
+                // arrived is not the one to step.
+                (0, _) if turn < R::ZERO => return None,
+                (_, 0) if turn > R::ZERO => return None,
+                (0, _) => (false, true),
+                (_, 0) => (true, false),
+                _ => (turn <= R::ZERO, turn >= R::ZERO),
+            };
+            if step_a {
+                (ia, left_a) = (next(ia, n), left_a - 1);
+            }
+            if step_b {
+                (ib, left_b) = (next(ib, m), left_b - 1);
+            }
+            // Of parallel edges, the longer's direction.
+            let edge = if step_b && (!step_a || edge_b.l1() >= edge_a.l1()) { edge_b } else { edge_a };
+            *slot = (self.vertex_of((ia, at(a, ia)), (ib, at(b, ib))), edge.perp_cw().try_normalize()?);
+            if left_a + left_b == 0 {
+                return Some(count + 1);
+            }
+        }
+        None
     }
 
     /// The vertex of B - A from A's vertex `ia` (`a` in its frame) and B's
@@ -714,6 +786,16 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     fn is_face(&self, from: u32, to: u32) -> bool {
         Pair::is_face(self, from, to)
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn faces_between(&self, from: u32, to: u32, faces: &mut [(SupportPoint<R>, R::Vector)]) -> Option<usize> {
+        let mut walked = [(MinkowskiVertex::default(), V2::zero()); WALKED_FACES_MAX];
+        let count = self.faces_between(from, to, faces.len(), &mut walked)?;
+        for (slot, (v, normal)) in faces.iter_mut().zip(walked.iter().take(count)) {
+            *slot = (SupportPoint { point: v.w.to_glam(), id: v.id }, normal.to_glam());
+        }
+        Some(count)
+    }
     fn scale(&self) -> R {
         Pair::scale(self)
     }
@@ -721,6 +803,10 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
         self.a.is_polytope() && self.b.is_polytope()
     }
 }
+
+/// The most faces [`Pair::faces_between`] walks.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub const WALKED_FACES_MAX: usize = 9;
 
 /// A polytope core's vertices as the shape lends them (a polygon's, a
 /// segment core's), counter-clockwise, indexed by their support ids, in

@@ -206,10 +206,10 @@ macro_rules! sat_suite {
 
 sat_suite!(separating_axes_match_the_oracle_f32, f32, Vec2, polygon(), 8, 1, 3000);
 sat_suite!(separating_axes_match_the_oracle_f64, f64, DVec2, polygon(), 8, 1, 3000);
-sat_suite!(walked_axes_match_the_oracle_f32, f32, Vec2, medium_polygon(), 64, 70, 1000);
-sat_suite!(walked_axes_match_the_oracle_f64, f64, DVec2, medium_polygon(), 64, 70, 1000);
-sat_suite!(walked_slivers_match_the_oracle_f32, f32, Vec2, sliver_polygon(), 64, 70_000, 1000);
-sat_suite!(walked_slivers_match_the_oracle_f64, f64, DVec2, sliver_polygon(), 64, 70_000, 1000);
+sat_suite!(walked_axes_match_the_oracle_f32, f32, Vec2, medium_polygon(), 64, 70, 10_000);
+sat_suite!(walked_axes_match_the_oracle_f64, f64, DVec2, medium_polygon(), 64, 70, 10_000);
+sat_suite!(walked_slivers_match_the_oracle_f32, f32, Vec2, sliver_polygon(), 64, 70_000, 10_000);
+sat_suite!(walked_slivers_match_the_oracle_f64, f64, DVec2, sliver_polygon(), 64, 70_000, 10_000);
 sat_suite!(large_polygons_match_the_oracle_f32, f32, Vec2, large_polygon(), 512, 7000, 300);
 sat_suite!(large_polygons_match_the_oracle_f64, f64, DVec2, large_polygon(), 512, 7000, 300);
 
