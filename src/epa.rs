@@ -261,6 +261,14 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
     }
 }
 
+/// [`edge`]'s distance and normal for a face from `p` whose outward unit
+/// normal the difference gave.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn face<R: Real>(p: V2<R>, normal: V2<R>) -> (R, V2<R>) {
+    (p.dot(normal).max(R::ZERO), normal)
+}
+
 fn corner<R: Real>(s: &SupportPoint<R>, curved: bool) -> Corner<R> {
     Corner::new(V2::from_glam(s.point), s.id, curved)
 }
@@ -364,8 +372,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
                 // `is_face` does not know): measured along its own normal, it
                 // is the answer where it is still the closest.
                 if let [(_, normal)] = faces.get(..count).unwrap_or_default() {
-                    let normal = V2::from_glam(*normal);
-                    let depth = p.w.dot(normal).max(R::ZERO);
+                    let (depth, normal) = face(p.w, V2::from_glam(*normal));
                     if depth <= lower {
                         if depth <= upper {
                             (upper, best) = (depth, normal);
@@ -379,8 +386,7 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
                 let items = polytope.items_mut();
                 for (k, (_, normal)) in faces.iter().take(count).enumerate() {
                     if let Some(c) = items.get_mut(i + k) {
-                        let normal = V2::from_glam(*normal);
-                        c.set_edge((c.w.dot(normal).max(R::ZERO), normal), curved);
+                        c.set_edge(face(c.w, V2::from_glam(*normal)), curved);
                     }
                 }
                 continue;

@@ -287,15 +287,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[inline(always)]
     pub fn is_face(&self, from: u32, to: u32) -> bool {
         let Some((a, b)) = self.polygon_cores() else { return false };
-        if from == NO_ID || to == NO_ID {
-            return false;
-        }
-        let (ia, ib, ja, jb) =
-            ((from >> 16) as usize, (from & 0xFFFF) as usize, (to >> 16) as usize, (to & 0xFFFF) as usize);
         let (n, m) = (a.len(), b.len());
-        if ia >= n || ja >= n || ib >= m || jb >= m {
+        let (Some((ia, ib)), Some((ja, jb))) = (vertex_indices(from, n, m), vertex_indices(to, n, m)) else {
             return false;
-        }
+        };
         let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
         let prev = |k: usize, len: usize| if k == 0 { len - 1 } else { k - 1 };
         // `k` is a support of `v` along `d`: neither edge beside it rises.
@@ -315,32 +310,22 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     }
 
     /// [`MinkowskiDifference::faces_between`] for two polygons whose types
-    /// are known when the program is compiled, where at most `room` (and
-    /// [`WALKED_FACES_MAX`]) faces lie between: the merge of their edges,
-    /// walked from `from` as [`neighbours`](Self::neighbours) steps, each
-    /// polygon's index going forwards as far as the ids say. Each face's
-    /// normal is its edge's, turned in the polygon's own frame.
+    /// are known when the program is compiled, where at most `out.len()`
+    /// (and [`WALKED_FACES_MAX`]) faces lie between: the merge of their
+    /// edges, walked from `from` as [`neighbours`](Self::neighbours) steps,
+    /// each polygon's index going forwards as far as the ids say. Each
+    /// face's normal is its edge's, turned in the polygon's own frame.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    pub fn faces_between(
-        &self,
-        from: u32,
-        to: u32,
-        room: usize,
-        out: &mut [(MinkowskiVertex<R>, V2<R>); WALKED_FACES_MAX],
-    ) -> Option<usize> {
+    pub fn faces_between(&self, from: u32, to: u32, out: &mut [(SupportPoint<R>, R::Vector)]) -> Option<usize> {
         let (a, b) = self.polygon_cores()?;
-        let (mut ia, mut ib, ja, jb) =
-            ((from >> 16) as usize, (from & 0xFFFF) as usize, (to >> 16) as usize, (to & 0xFFFF) as usize);
         let (n, m) = (a.len(), b.len());
-        if from == NO_ID || to == NO_ID || ia >= n || ja >= n || ib >= m || jb >= m {
-            return None;
-        }
+        let ((mut ia, mut ib), (ja, jb)) = (vertex_indices(from, n, m)?, vertex_indices(to, n, m)?);
         let steps = |from: usize, to: usize, len: usize| if to >= from { to - from } else { to + len - from };
         let (mut left_a, mut left_b) = (steps(ia, ja, n), steps(ib, jb, m));
         // Room for as many faces as the steps (parallel edges, taken
         // together, make fewer).
-        if !(1..=room.min(WALKED_FACES_MAX)).contains(&(left_a + left_b)) {
+        if !(1..=out.len().min(WALKED_FACES_MAX)).contains(&(left_a + left_b)) {
             return None;
         }
         let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
@@ -366,7 +351,9 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             }
             // Of parallel edges, the longer's direction.
             let edge = if step_b && (!step_a || edge_b.l1() >= edge_a.l1()) { edge_b } else { edge_a };
-            *slot = (self.vertex_of((ia, at(a, ia)), (ib, at(b, ib))), edge.perp_cw().try_normalize()?);
+            let end = self.vertex_of((ia, at(a, ia)), (ib, at(b, ib)));
+            let normal = edge.perp_cw().try_normalize()?;
+            *slot = (SupportPoint { point: end.w.to_glam(), id: end.id }, normal.to_glam());
             if left_a + left_b == 0 {
                 return Some(count + 1);
             }
@@ -432,11 +419,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[inline(always)]
     pub fn neighbours(&self, v: &MinkowskiVertex<R>) -> Option<[MinkowskiVertex<R>; 2]> {
         let (a, b) = self.polygon_cores()?;
-        let (ia, ib) = ((v.id >> 16) as usize, (v.id & 0xFFFF) as usize);
         let (n, m) = (a.len(), b.len());
-        if v.id == NO_ID || ia >= n || ib >= m {
-            return None;
-        }
+        let (ia, ib) = vertex_indices(v.id, n, m)?;
         let (next_a, prev_a) = (if ia + 1 == n { 0 } else { ia + 1 }, if ia == 0 { n - 1 } else { ia - 1 });
         let (next_b, prev_b) = (if ib + 1 == m { 0 } else { ib + 1 }, if ib == 0 { m - 1 } else { ib - 1 });
         // B's edges placed (the offset cancels), A's reversed.
@@ -789,12 +773,7 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     fn faces_between(&self, from: u32, to: u32, faces: &mut [(SupportPoint<R>, R::Vector)]) -> Option<usize> {
-        let mut walked = [(MinkowskiVertex::default(), V2::zero()); WALKED_FACES_MAX];
-        let count = self.faces_between(from, to, faces.len(), &mut walked)?;
-        for (slot, (v, normal)) in faces.iter_mut().zip(walked.iter().take(count)) {
-            *slot = (SupportPoint { point: v.w.to_glam(), id: v.id }, normal.to_glam());
-        }
-        Some(count)
+        Pair::faces_between(self, from, to, faces)
     }
     fn scale(&self) -> R {
         Pair::scale(self)
@@ -802,6 +781,15 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     fn is_polytope(&self) -> bool {
         self.a.is_polytope() && self.b.is_polytope()
     }
+}
+
+/// A's and B's vertex indices in the support id `id`, where both are in
+/// range (`n` and `m` vertices); `None` for [`NO_ID`].
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn vertex_indices(id: u32, n: usize, m: usize) -> Option<(usize, usize)> {
+    let (ia, ib) = ((id >> 16) as usize, (id & 0xFFFF) as usize);
+    (id != NO_ID && ia < n && ib < m).then_some((ia, ib))
 }
 
 /// The most faces [`Pair::faces_between`] walks.
