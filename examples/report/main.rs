@@ -5,6 +5,7 @@
 //! cargo run --release --example report -- --quick   # CI's smoke run: fewer cases and repeats
 //! cargo run --release --example report -- --long    # 4x the cases, more repeats
 //! cargo run --release --example report -- --cases my-cases.txt --out report
+//! cargo run --release --example report -- --only poly64,circle_circle --reps 61
 //! ```
 //!
 //! Every scene family is generated from a fixed seed. All inputs are f32 values, so the
@@ -53,6 +54,7 @@ fn main() {
     let mut files: Vec<String> = Vec::new();
     let mut out_dir = "target/report".to_string();
     let mut save_dir: Option<String> = None;
+    let mut only: Option<Vec<String>> = None;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -69,8 +71,18 @@ fn main() {
             "--cases" => files.push(args.next().expect("--cases FILE")),
             "--out" => out_dir = args.next().expect("--out DIR"),
             "--save-cases" => save_dir = Some(args.next().expect("--save-cases DIR")),
+            "--only" => {
+                only = Some(args.next().expect("--only FAMILY[,FAMILY...]").split(',').map(String::from).collect())
+            }
+            "--reps" => match args.next().and_then(|n| n.parse().ok()).filter(|&n: &usize| n > 0) {
+                Some(n) => reps = n,
+                None => {
+                    eprintln!("--reps takes a count of passes, at least 1");
+                    std::process::exit(2);
+                }
+            },
             "-h" | "--help" => {
-                println!("usage: report [--quick | --long] [--cases FILE]... [--out DIR] [--save-cases DIR]");
+                println!("usage: report [--quick | --long] [--cases FILE]... [--out DIR] [--save-cases DIR] [--only FAMILY[,FAMILY...]] [--reps N]");
                 return;
             }
             other => {
@@ -80,7 +92,12 @@ fn main() {
         }
     }
     let start = Instant::now();
-    let mut families = generate(scale);
+    let kept = |name: &str| only.as_ref().is_none_or(|names| names.iter().any(|n| n == name));
+    let all_names = std::cell::RefCell::new(Vec::new());
+    let mut families = generate(scale, &|name: &str| {
+        all_names.borrow_mut().push(name.to_string());
+        kept(name)
+    });
     for f in &files {
         match load_cases(f) {
             Ok(fam) => families.push(fam),
@@ -88,6 +105,13 @@ fn main() {
                 eprintln!("[report] {e}");
                 std::process::exit(1);
             }
+        }
+    }
+    if only.is_some() {
+        families.retain(|f| kept(&f.name));
+        if families.is_empty() {
+            eprintln!("[report] --only names no family; the families are {}", all_names.borrow().join(", "));
+            std::process::exit(2);
         }
     }
     let mut rows = Vec::new();
@@ -102,6 +126,19 @@ fn main() {
             _ => run_family::<1100>(f, reps, &mut rows),
         }
         eprintln!("[report] measured {:<16} in {:5.2} s", f.name, t.elapsed().as_secs_f64());
+    }
+    // A partial run prints its rows and targets only: it writes no report
+    // that could stand in for the whole one.
+    if only.is_some() {
+        let measured = |line: &&str| {
+            !line.starts_with("| ")
+                || line.starts_with("| family |")
+                || families.iter().any(|f| line.starts_with(&format!("| {} |", f.name)))
+        };
+        let tg = targets(&rows);
+        println!("{}", plain_table(&HEADER, &table_rows(&rows)));
+        println!("{}", tg.lines().filter(measured).collect::<Vec<_>>().join("\n"));
+        return;
     }
     let t = Instant::now();
     let warm = warm::warm_table(&warm::warm_rows(reps));
