@@ -276,7 +276,7 @@ type CastSpec = (String, Vec<(Sh, Sh, [f64; 2])>, usize);
 /// Every family drawn from the fixed seed; only those `keep` names are
 /// solved by the oracle and returned (the others' draws still happen, so a
 /// family's cases are the same in a partial run).
-pub(crate) fn generate(scale: f64, keep: &dyn Fn(&str) -> bool) -> Vec<Family> {
+pub(crate) fn generate(scale: f64, keep: &mut dyn FnMut(&str) -> bool) -> Vec<Family> {
     let mut rng = Rng(0x6A6B_3264_2024);
     let n = |k: usize| ((k as f64 * scale).round() as usize).max(4);
     let mut pair_specs: Vec<PairSpec> = Vec::new();

@@ -92,27 +92,31 @@ fn main() {
         }
     }
     let start = Instant::now();
-    let kept = |name: &str| only.as_ref().is_none_or(|names| names.iter().any(|n| n == name));
-    let all_names = std::cell::RefCell::new(Vec::new());
-    let mut families = generate(scale, &|name: &str| {
-        all_names.borrow_mut().push(name.to_string());
-        kept(name)
+    let wanted = |name: &str| only.as_ref().is_none_or(|asked| asked.iter().any(|n| n == name));
+    let mut names = Vec::new();
+    let mut families = generate(scale, &mut |name| {
+        names.push(name.to_string());
+        wanted(name)
     });
     for f in &files {
         match load_cases(f) {
-            Ok(fam) => families.push(fam),
+            Ok(fam) => {
+                names.push(fam.name.clone());
+                families.push(fam)
+            }
             Err(e) => {
                 eprintln!("[report] {e}");
                 std::process::exit(1);
             }
         }
     }
-    if only.is_some() {
-        families.retain(|f| kept(&f.name));
-        if families.is_empty() {
-            eprintln!("[report] --only names no family; the families are {}", all_names.borrow().join(", "));
+    if let Some(asked) = &only {
+        let unknown: Vec<&str> = asked.iter().filter(|n| !names.contains(n)).map(String::as_str).collect();
+        if !unknown.is_empty() {
+            eprintln!("[report] --only: no family {}; the families are {}", unknown.join(", "), names.join(", "));
             std::process::exit(2);
         }
+        families.retain(|f| wanted(&f.name));
     }
     let mut rows = Vec::new();
     for f in &families {
@@ -130,14 +134,8 @@ fn main() {
     // A partial run prints its rows and targets only: it writes no report
     // that could stand in for the whole one.
     if only.is_some() {
-        let measured = |line: &&str| {
-            !line.starts_with("| ")
-                || line.starts_with("| family |")
-                || families.iter().any(|f| line.starts_with(&format!("| {} |", f.name)))
-        };
-        let tg = targets(&rows);
         println!("{}", plain_table(&HEADER, &table_rows(&rows)));
-        println!("{}", tg.lines().filter(measured).collect::<Vec<_>>().join("\n"));
+        println!("{}", targets(&rows, &|name| families.iter().any(|f| f.name == name)));
         return;
     }
     let t = Instant::now();
@@ -147,7 +145,7 @@ fn main() {
 
     let table = table_rows(&rows);
     let (sh, st) = stability(&rows);
-    let tg = targets(&rows);
+    let tg = targets(&rows, &|_| true);
     let notes = "Errors are relative to L, the larger bounding radius of the pair; for rays L = max(bounding radius, distance from the ray origin to the shape's center); for casts (B moving by m against A) L is the pair's plus |m|, and the exact answer is the ray from the origin along m against the exact Minkowski difference A - B. \
 A manifold (speculative margin 0) is wrong where it has points and the exact shapes are apart, or none and they overlap; its error is the larger of the farthest a point lies off its shape's boundary (each point on A and on B, exact distances) and the least separation's distance from the exact signed distance. \
 A verdict is wrong only where the exact margin exceeds 8 eps L (eps of the precision). \
