@@ -22,7 +22,7 @@
 //! transforms held as data (as a scene's are, not constants to fold); inputs
 //! are f32 values, so both precisions see the same geometry.
 
-use gjk2d::{Capsule, Circle, Gjk, ImpactConfig, Motion, PairCache, Polygon, Ray, Real, SupportMap, Sweep, Transform};
+use gjk2d::{Capsule, Circle, Gjk, ImpactConfig, Motion, PairCache, Polygon, Ray, Real, Sweep, Transform};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -218,30 +218,37 @@ enum Query {
 const PAIR_QUERIES: [(Query, &str); 3] =
     [(Query::Intersect, "intersects"), (Query::Distance, "distance"), (Query::Penetration, "penetration")];
 
-fn g_pairs<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>)], q: Query) {
-    let gjk = Gjk::<R>::new();
-    let id = Transform::<R>::IDENTITY;
-    #[inline(always)]
-    fn run<R: Real, A: SupportMap<R>, B: SupportMap<R>>(gjk: &Gjk<R>, q: Query, a: &A, b: &B, id: &Transform<R>) {
-        match q {
-            Query::Intersect => {
-                black_box(gjk.intersects(a, id, b, id));
-            }
-            Query::Distance => {
-                black_box(gjk.distance(a, id, b, id));
-            }
-            Query::Penetration => {
-                black_box(gjk.penetration(a, id, b, id));
-            }
-            Query::Manifold => {
-                let _ = black_box(gjk.manifold(a, id, b, id, R::ZERO));
-            }
+/// Every pair of `batch` asked `$body`, with `$x`, `$y` its two shapes (each
+/// enum matched, as a scene's shapes are) and `$id` the transform as data (a
+/// scene's are), not a constant the compiler folds.
+macro_rules! g_each_pair {
+    ($R:ty, $batch:expr, |$gjk:ident, $x:ident, $y:ident, $id:ident| $body:expr) => {{
+        let $gjk = Gjk::<$R>::new();
+        let identity = Transform::<$R>::IDENTITY;
+        for (a, b) in $batch {
+            let (a, b) = (black_box(a), black_box(b));
+            let $id = black_box(&identity);
+            with_g!(a, |$x| with_g!(b, |$y| $body));
         }
-    }
-    for (a, b) in batch {
-        let (a, b) = (black_box(a), black_box(b));
-        // The transform as data (a scene's are), not a constant the compiler folds.
-        with_g!(a, |x| with_g!(b, |y| run(&gjk, q, x, y, black_box(&id))));
+    }};
+}
+
+/// One loop a query kind, as a scene asks one kind of many pairs in turn:
+/// the kind is not chosen again for every pair.
+fn g_pairs<R: Real, const N: usize>(batch: &[(G<R, N>, G<R, N>)], q: Query) {
+    match q {
+        Query::Intersect => g_each_pair!(R, batch, |gjk, a, b, id| {
+            black_box(gjk.intersects(a, id, b, id));
+        }),
+        Query::Distance => g_each_pair!(R, batch, |gjk, a, b, id| {
+            black_box(gjk.distance(a, id, b, id));
+        }),
+        Query::Penetration => g_each_pair!(R, batch, |gjk, a, b, id| {
+            black_box(gjk.penetration(a, id, b, id));
+        }),
+        Query::Manifold => g_each_pair!(R, batch, |gjk, a, b, id| {
+            let _ = black_box(gjk.manifold(a, id, b, id, R::ZERO));
+        }),
     }
 }
 
@@ -310,22 +317,29 @@ macro_rules! parry_side {
                 (Ray::new(v(o), d / d.length()), if max > 0.0 { max as $R } else { <$R>::MAX })
             }
 
+            /// One loop a query kind, as for gjk2d.
             pub fn pairs(batch: &[(PS, PS)], q: Query) {
-                // Cleared before each pair: every manifold is computed cold.
-                let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::with_capacity(1);
-                for (a, b) in batch {
-                    let (a, b) = (black_box(a), black_box(b));
-                    match q {
-                        Query::Intersect => {
+                let each = || batch.iter().map(|(a, b)| (black_box(a), black_box(b)));
+                match q {
+                    Query::Intersect => {
+                        for (a, b) in each() {
                             let _ = black_box(query::intersection_test(&a.1, &*a.0, &b.1, &*b.0));
                         }
-                        Query::Distance => {
+                    }
+                    Query::Distance => {
+                        for (a, b) in each() {
                             let _ = black_box(query::distance(&a.1, &*a.0, &b.1, &*b.0));
                         }
-                        Query::Penetration => {
+                    }
+                    Query::Penetration => {
+                        for (a, b) in each() {
                             let _ = black_box(query::contact(&a.1, &*a.0, &b.1, &*b.0, 0.0));
                         }
-                        Query::Manifold => {
+                    }
+                    Query::Manifold => {
+                        // Cleared before each pair: every manifold is computed cold.
+                        let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::with_capacity(1);
+                        for (a, b) in each() {
                             manifolds.clear();
                             let pos12 = a.1.inv_mul(&b.1);
                             let mut workspace = None;

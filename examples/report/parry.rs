@@ -171,28 +171,33 @@ macro_rules! parry_side {
                                 _ => judge_pair(&mut acc, q, c, eps, out, (Status::Converged, None)),
                             }
                         }
-                        let batch: Batch<'a> = Box::new(move || {
-                            let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::with_capacity(1);
-                            for (a, b) in shapes.iter().take(TIMED_CASES) {
-                                let (a, b) = (black_box(a), black_box(b));
-                                match q {
-                                    Query::Intersect => {
-                                        let _ = black_box(query::intersection_test(&a.pos, &*a.s, &b.pos, &*b.s));
-                                    }
-                                    Query::Distance => {
-                                        let _ = black_box(query::distance(&a.pos, &*a.s, &b.pos, &*b.s));
-                                    }
-                                    Query::Penetration => {
-                                        let _ = black_box(query::contact(&a.pos, &*a.s, &b.pos, &*b.s, 0.0));
-                                    }
-                                    Query::Manifold => {
-                                        manifold(a, b, &mut manifolds);
-                                        black_box(&manifolds);
-                                    }
-                                    Query::Ray | Query::Cast => unreachable!(),
+                        // One loop a query kind, as for gjk2d.
+                        let pairs = || shapes.iter().take(TIMED_CASES).map(|(a, b)| (black_box(a), black_box(b)));
+                        let batch: Batch<'a> = match q {
+                            Query::Intersect => Box::new(move || {
+                                for (a, b) in pairs() {
+                                    let _ = black_box(query::intersection_test(&a.pos, &*a.s, &b.pos, &*b.s));
                                 }
-                            }
-                        });
+                            }),
+                            Query::Distance => Box::new(move || {
+                                for (a, b) in pairs() {
+                                    let _ = black_box(query::distance(&a.pos, &*a.s, &b.pos, &*b.s));
+                                }
+                            }),
+                            Query::Penetration => Box::new(move || {
+                                for (a, b) in pairs() {
+                                    let _ = black_box(query::contact(&a.pos, &*a.s, &b.pos, &*b.s, 0.0));
+                                }
+                            }),
+                            Query::Manifold => Box::new(move || {
+                                let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::with_capacity(1);
+                                for (a, b) in pairs() {
+                                    manifold(a, b, &mut manifolds);
+                                    black_box(&manifolds);
+                                }
+                            }),
+                            Query::Ray | Query::Cast => unreachable!(),
+                        };
                         Some((acc, shapes.len().min(TIMED_CASES), batch))
                     }
                     (Cases::Rays(cases), PFamily::Rays(rays)) => {
