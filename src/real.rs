@@ -612,15 +612,29 @@ mod sse2 {
         in_lanes: impl Fn(usize, R) -> Option<usize>,
     ) -> [usize; 4] {
         let tail = v.get(covered..).unwrap_or_default();
-        core::array::from_fn(|k| {
-            let (axis, least) = (k % 2, k >= 2);
-            let d = [u, t][axis];
-            let extreme = tail.iter().fold(lanes[usize::from(least)][axis], |m, p| {
+        #[inline(always)]
+        fn first<R: super::Real>(
+            (tail, covered): (&[V2<R>], usize),
+            d: V2<R>,
+            (axis, least): (usize, bool),
+            lane: R,
+            in_lanes: &impl Fn(usize, R) -> Option<usize>,
+        ) -> usize {
+            let extreme = tail.iter().fold(lane, |m, p| {
                 let dot = p.dot(d);
                 core::hint::select_unpredictable(if least { dot < m } else { dot > m }, dot, m)
             });
             in_lanes(axis, extreme).unwrap_or_else(|| first_equal(tail, covered, d, extreme))
-        })
+        }
+        // Written out, not `array::from_fn`, whose closure was called out
+        // of line four times a polygon.
+        let tail = (tail, covered);
+        [
+            first(tail, u, (0, false), lanes[0][0], &in_lanes),
+            first(tail, t, (1, false), lanes[0][1], &in_lanes),
+            first(tail, u, (0, true), lanes[1][0], &in_lanes),
+            first(tail, t, (1, true), lanes[1][1], &in_lanes),
+        ]
     }
 
     /// The first lane whose bit `mask` sets, over `blocks` of `lanes` lanes
