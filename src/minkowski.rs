@@ -334,23 +334,24 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             // edges together. A polygon with no steps left stays.
             let (edge_a, edge_b) = (at(a, ia) - at(a, next(ia, n)), self.rotate(at(b, next(ib, m)) - at(b, ib)));
             let turn = edge_b.cross(edge_a);
-            let (step_a, step_b) = match (left_a, left_b) {
-                // The ids must agree with the merge: a polygon that has
-                // arrived is not the one to step.
-                (0, _) if turn < R::ZERO => return None,
-                (_, 0) if turn > R::ZERO => return None,
-                (0, _) => (false, true),
-                (_, 0) => (true, false),
-                _ => (turn <= R::ZERO, turn >= R::ZERO),
-            };
-            if step_a {
-                (ia, left_a) = (next(ia, n), left_a - 1);
+            let (arrived_a, arrived_b) = (left_a == 0, left_b == 0);
+            // The ids must agree with the merge: a polygon that has arrived
+            // is not the one to step.
+            if (arrived_a && turn < R::ZERO) || (arrived_b && turn > R::ZERO) {
+                return None;
             }
-            if step_b {
-                (ib, left_b) = (next(ib, m), left_b - 1);
-            }
+            // Which polygon steps is as unpredictable as the shapes: chosen
+            // by selects, so that each face's normal (a root and a division)
+            // is not thrown away by a mispredicted branch after it.
+            let step_a = !arrived_a && (arrived_b || turn <= R::ZERO);
+            let step_b = !arrived_b && (arrived_a || turn >= R::ZERO);
+            ia = core::hint::select_unpredictable(step_a, next(ia, n), ia);
+            ib = core::hint::select_unpredictable(step_b, next(ib, m), ib);
+            left_a -= usize::from(step_a);
+            left_b -= usize::from(step_b);
             // Of parallel edges, the longer's direction.
-            let edge = if step_b && (!step_a || edge_b.l1() >= edge_a.l1()) { edge_b } else { edge_a };
+            let edge =
+                core::hint::select_unpredictable(step_b && (!step_a || edge_b.l1() >= edge_a.l1()), edge_b, edge_a);
             let end = self.vertex_of((ia, at(a, ia)), (ib, at(b, ib)));
             let normal = edge.perp_cw().try_normalize()?;
             *slot = (SupportPoint { point: end.w.to_glam(), id: end.id }, normal.to_glam());
