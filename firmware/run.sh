@@ -45,7 +45,6 @@ KNOWN_MISSES=(
   "stack budget: f64 cast "
   "stack budget: f64 manifold "
   "stack budget: f64 time of impact "
-  "flash budget: (3) + EPA penetration "
   "flash budget: (5) every shape and query, f32 "
 )
 known_misses=()

@@ -173,6 +173,8 @@ pub(crate) trait Storage<R> {
     /// false when full.
     fn insert_at(&mut self, index: usize, c: Corner<R>) -> bool;
     fn clear_all(&mut self);
+    /// How many corners fit in all.
+    fn capacity(&self) -> usize;
     /// How many more corners fit.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn room(&self) -> usize;
@@ -206,6 +208,9 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     }
     fn clear_all(&mut self) {
         self.clear()
+    }
+    fn capacity(&self) -> usize {
+        N
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn room(&self) -> usize {
@@ -241,6 +246,9 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
     }
     fn clear_all(&mut self) {
         self.clear()
+    }
+    fn capacity(&self) -> usize {
+        usize::MAX
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn room(&self) -> usize {
@@ -284,6 +292,11 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     let support = |d: V2<R>| corner(&difference.support(d.to_glam()), curved);
     let tolerance = config.epsilon() * difference.scale();
     let mut iterations = 0;
+    // Every corner is a vertex of the difference, none twice (a support
+    // that repeats an end stops the loop): a polytope with room for all of
+    // them never fills. Known when the program is compiled for shapes of
+    // fixed size, so their code for a full polytope drops out.
+    let can_fill = difference.vertex_bound() >= polytope.capacity();
 
     // GJK's simplex, counter-clockwise, is the polytope to expand. One that
     // only touches the origin (a point, or an edge through it) has no
@@ -428,6 +441,9 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         // Where the edge's start `p` is once `new` is in.
         let start = if polytope.insert_at(at, new) {
             i
+        } else if !can_fill {
+            // Only a support repeated past rounding could have filled it.
+            break (i, lower, Status::CapacityLimit);
         } else {
             // Full: `new` takes the place of the corner that matters least,
             // moved to where it belongs (the corners between shift by one).

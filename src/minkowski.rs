@@ -83,6 +83,12 @@ pub trait MinkowskiDifference<R: Real> {
     fn is_polytope(&self) -> bool {
         false
     }
+    /// At most how many vertices the difference has, where it is a
+    /// polytope ([`SupportMap::core_vertex_bound`]): the sum of the cores'.
+    /// The default, unbounded, is always safe.
+    fn vertex_bound(&self) -> usize {
+        usize::MAX
+    }
 }
 
 /// A polytope core's vertices, relative to its reference point.
@@ -781,6 +787,9 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     }
     fn is_polytope(&self) -> bool {
         self.a.is_polytope() && self.b.is_polytope()
+    }
+    fn vertex_bound(&self) -> usize {
+        self.a.core_vertex_bound().saturating_add(self.b.core_vertex_bound())
     }
 }
 

@@ -19,6 +19,8 @@ use geo::integer_hull;
 /// A convex polygon (counter-clockwise, integer vertices) posing as B - A.
 struct Difference {
     vertices: Vec<(i64, i64)>,
+    /// What it says of its vertex count (`MinkowskiDifference::vertex_bound`).
+    vertex_bound: usize,
 }
 
 impl Difference {
@@ -29,7 +31,7 @@ impl Difference {
             let turn = (b.0 - a.0) * (c.1 - b.1) - (b.1 - a.1) * (c.0 - b.0);
             assert!(turn > 0, "test polygon must be strictly convex and counter-clockwise");
         }
-        Self { vertices: vertices.to_vec() }
+        Self { vertices: vertices.to_vec(), vertex_bound: usize::MAX }
     }
 
     fn point(&self, i: usize) -> SupportPoint<f64> {
@@ -73,6 +75,9 @@ impl MinkowskiDifference<f64> for Difference {
     }
     fn is_polytope(&self) -> bool {
         true
+    }
+    fn vertex_bound(&self) -> usize {
+        self.vertex_bound
     }
 }
 
@@ -190,6 +195,34 @@ fn a_full_polytope_stays_sound() {
         }
     }
     assert!(limited > 0, "no capacity was too small: the test checks nothing");
+}
+
+#[test]
+fn a_polytope_with_room_for_every_vertex_answers_as_before() {
+    // Told that the difference has at most its 64 vertices, a polytope of
+    // 80 corners knows it cannot fill: the same answer, to the bit.
+    let (unbounded, mut bounded) = (many_sided(), many_sided());
+    bounded.vertex_bound = 64;
+    let simplex = [unbounded.point(0), unbounded.point(21), unbounded.point(42)];
+    let solver = Epa::<f64, 80>::new(EpaConfig::default());
+    let (before, after) = (solver.solve(&unbounded, &simplex), solver.solve(&bounded, &simplex));
+    assert_eq!(after.status, Status::Converged, "{after:?}");
+    assert_eq!(before, after);
+    check_depth("64-gon, bounded", &bounded, &simplex);
+}
+
+#[test]
+fn a_vertex_bound_that_lies_still_stops_soundly() {
+    // A difference that says it has 3 vertices, and has 64: the polytope
+    // of 8 corners fills all the same, and the solver stops there, its
+    // bounds sound, where with no bound it would merge corners and go on.
+    let mut d = many_sided();
+    d.vertex_bound = 3;
+    let simplex = [d.point(0), d.point(21), d.point(42)];
+    let estimate = Epa::<f64, 8>::new(EpaConfig::default()).solve(&d, &simplex);
+    assert_eq!(estimate.status, Status::CapacityLimit, "{estimate:?}");
+    assert!(estimate.iterations as usize <= 8 - 3 + 1, "{estimate:?}");
+    check_sound("a bound that lies", &d, &estimate).unwrap();
 }
 
 /// A `k`-gon of radius 10^6 with integer vertices, its center 1.3% of its

@@ -87,6 +87,9 @@ impl<R: Real> SupportMap<R> for Capsule<R> {
     fn is_polytope(&self) -> bool {
         true
     }
+    fn core_vertex_bound(&self) -> usize {
+        2
+    }
     /// The center is the core's midpoint, exactly (a halving).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn inner_radius_squared(&self) -> R {

@@ -94,6 +94,9 @@ impl<R: Real> SupportMap<R> for Circle<R> {
     fn is_polytope(&self) -> bool {
         true
     }
+    fn core_vertex_bound(&self) -> usize {
+        1
+    }
     fn reference_point(&self) -> R::Vector {
         self.center.to_glam()
     }

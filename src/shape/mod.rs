@@ -166,6 +166,15 @@ pub trait SupportMap<R: Real> {
         false
     }
 
+    /// At most how many vertices the core has, where it is a polytope
+    /// ([`is_polytope`](Self::is_polytope)). A penetration solver whose
+    /// polytope has room for more than two such cores' vertices can never
+    /// fill it, and leaves out its work for a full one: a firmware of small
+    /// polygons links none of it. The default, unbounded, is always safe.
+    fn core_vertex_bound(&self) -> usize {
+        usize::MAX
+    }
+
     /// An exact ray cast, for shapes that have a closed form: a ray in the
     /// local frame (origin relative to the reference point, unit direction),
     /// `max_length` infinite when unbounded. `None` (the default) makes the ray
@@ -312,6 +321,9 @@ impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {
     }
     fn is_polytope(&self) -> bool {
         (**self).is_polytope()
+    }
+    fn core_vertex_bound(&self) -> usize {
+        (**self).core_vertex_bound()
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         (**self).cast_local_ray(o, d, max)

@@ -232,6 +232,9 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     fn is_polytope(&self) -> bool {
         N <= 0xFFFF
     }
+    fn core_vertex_bound(&self) -> usize {
+        N
+    }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn small_polygon(&self) -> Option<super::SmallPolygon<'_, R>> {
         (self.len <= super::SMALL_POLYGON_MAX).then(|| super::SmallPolygon { vertices: self.vertices() })

@@ -72,6 +72,9 @@ impl<R: Real> SupportMap<R> for Rectangle<R> {
     fn is_polytope(&self) -> bool {
         true
     }
+    fn core_vertex_bound(&self) -> usize {
+        4
+    }
     fn center(&self) -> R::Vector {
         R::vector(R::ZERO, R::ZERO)
     }

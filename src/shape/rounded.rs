@@ -74,6 +74,9 @@ impl<R: Real, S: SupportMap<R>> SupportMap<R> for Rounded<R, S> {
     fn is_polytope(&self) -> bool {
         self.inner.is_polytope()
     }
+    fn core_vertex_bound(&self) -> usize {
+        self.inner.core_vertex_bound()
+    }
     fn reference_point(&self) -> R::Vector {
         self.inner.reference_point()
     }

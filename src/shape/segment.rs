@@ -80,6 +80,9 @@ impl<R: Real> SupportMap<R> for Segment<R> {
     fn is_polytope(&self) -> bool {
         true
     }
+    fn core_vertex_bound(&self) -> usize {
+        2
+    }
     fn center(&self) -> R::Vector {
         (self.delta * R::HALF).to_glam()
     }

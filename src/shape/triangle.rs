@@ -59,6 +59,9 @@ impl<R: Real> SupportMap<R> for Triangle<R> {
     fn is_polytope(&self) -> bool {
         true
     }
+    fn core_vertex_bound(&self) -> usize {
+        3
+    }
     fn center(&self) -> R::Vector {
         self.0.center()
     }
