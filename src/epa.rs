@@ -177,7 +177,9 @@ pub(crate) trait Storage<R> {
     fn capacity(&self) -> usize;
     /// How many more corners fit.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    fn room(&self) -> usize;
+    fn room(&self) -> usize {
+        self.capacity().saturating_sub(self.items().len())
+    }
 }
 
 impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
@@ -212,10 +214,6 @@ impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
     fn capacity(&self) -> usize {
         N
     }
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    fn room(&self) -> usize {
-        N - self.len()
-    }
 }
 
 /// Moves item `from` to index `to`, the items between shifting by one to
@@ -248,10 +246,6 @@ impl<R: Copy> Storage<R> for std::vec::Vec<Corner<R>> {
         self.clear()
     }
     fn capacity(&self) -> usize {
-        usize::MAX
-    }
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    fn room(&self) -> usize {
         usize::MAX
     }
 }

@@ -460,4 +460,24 @@ proptest! {
             check_sound(&format!("N = {n}"), &d, &estimate).map_err(TestCaseError::fail)?;
         }
     }
+
+    /// The reasoning that lets EPA drop its code for a full polytope: every
+    /// corner is a vertex of the difference, none twice, so a polytope
+    /// with room for all of them never fills. Told the true vertex count,
+    /// a polytope of 64 corners converges on every polygon of fewer
+    /// vertices, with the answer it gives knowing nothing of the count.
+    #[test]
+    fn room_for_every_vertex_never_fills(raw in prop_oneof![scattered(), nearly_round()]) {
+        let Some(mut d) = convex_hull(&raw) else { return Ok(()) };
+        let Some(simplex) = enclosing_triangle(&d) else { return Ok(()) };
+        if d.vertices.len() >= 64 {
+            return Ok(());
+        }
+        let solver = Epa::<f64, 64>::new(EpaConfig::default());
+        let unbounded = solver.solve(&d, &simplex);
+        d.vertex_bound = d.vertices.len();
+        let bounded = solver.solve(&d, &simplex);
+        prop_assert_eq!(bounded.status, Status::Converged, "{:?}", bounded);
+        prop_assert_eq!(bounded, unbounded);
+    }
 }
