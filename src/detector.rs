@@ -272,6 +272,12 @@ impl<R: Real, P> Gjk<R, P> {
                 return core.penetration(pair);
             }
         }
+        // Shapes whose bounding disks are apart have no penetration: said
+        // before any support, which for large polygons reads both from memory.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if pair.bounding_disks_apart() {
+            return None;
+        }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if P::SEPARATING_AXES {
             if let Some((p, polygon, point_is_a)) = pair.point_and_small_polygon() {
