@@ -416,6 +416,17 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some(core::array::from_fn(|k| self.vertex_of((ia[k], at(a, ia[k])), (ib[k], at(b, ib[k])))))
     }
 
+    /// Asks for the lines the supports along each of `d` will read, where
+    /// both cores are searched polygons
+    /// ([`ask_searches`](crate::polytope::ask_searches)).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn ask_supports<const K: usize>(&self, d: [V2<R>; K]) {
+        if let Some((a, b)) = self.searched_polygon_cores() {
+            crate::polytope::ask_searches((a, d.map(|d| -d)), (b, d.map(|d| self.inverse_rotate(d))));
+        }
+    }
+
     /// The vertices of B - A just before and just after its vertex `v` (of
     /// two polygon cores, by `v`'s ids), counter-clockwise: of the two
     /// edges that could leave a vertex (B's, or A's reversed), the one that

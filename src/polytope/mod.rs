@@ -157,11 +157,22 @@ impl<R: Real> AngularSearch<R> {
     /// Asks for the coarse sample's lines.
     #[inline(always)]
     fn begin(vertices: &[V2<R>], d: V2<R>) -> Self {
+        Self::ask_sample(vertices);
+        Self::along(vertices, d)
+    }
+
+    #[inline(always)]
+    fn ask_sample(vertices: &[V2<R>]) {
         let n = vertices.len();
         for j in 0..Self::SAMPLES {
             prefetch(vertices, j * n / Self::SAMPLES);
         }
-        Self { turning: Turning::from(edge_from(vertices, 0), d), lo: 1, hi: n }
+    }
+
+    /// A search whose sample is asked for already.
+    #[inline(always)]
+    fn along(vertices: &[V2<R>], d: V2<R>) -> Self {
+        Self { turning: Turning::from(edge_from(vertices, 0), d), lo: 1, hi: vertices.len() }
     }
 
     /// Halves the bracket while it spans many lines (reading the sample's,
@@ -240,6 +251,22 @@ pub(crate) fn pair_support_near<R: Real>(
             let (i, j) = (search_a.finish(a), search_b.finish(b));
             (climbed(a, da, i), climbed(b, db, j))
         }
+    }
+}
+
+/// Asks for every line the searches of two searched polytopes' supports
+/// will read (A's along each of `da`, B's along each of `db`): the searches
+/// narrowed side by side, each wait for memory shared, and left unfinished.
+/// The supports looked up one after another then find their lines there or
+/// on their way, where each would wait for memory in turn.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn ask_searches<R: Real, const K: usize>((a, da): (&[V2<R>], [V2<R>; K]), (b, db): (&[V2<R>], [V2<R>; K])) {
+    AngularSearch::<R>::ask_sample(a);
+    AngularSearch::<R>::ask_sample(b);
+    for k in 0..K {
+        AngularSearch::along(a, da[k]).narrow(a);
+        AngularSearch::along(b, db[k]).narrow(b);
     }
 }
 
