@@ -416,14 +416,14 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         Some(core::array::from_fn(|k| self.vertex_of((ia[k], at(a, ia[k])), (ib[k], at(b, ib[k])))))
     }
 
-    /// Asks for the lines the supports along each of `d` will read, where
-    /// both cores are searched polygons
-    /// ([`ask_searches`](crate::polytope::ask_searches)).
+    /// Asks for the lines the supports along `u`, `u.perp()`, `-u` and
+    /// `-u.perp()` will read, where both cores are searched polygons
+    /// ([`ask_square_searches`](crate::polytope::ask_square_searches)).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    pub fn ask_supports<const K: usize>(&self, d: [V2<R>; K]) {
+    pub fn ask_square_supports(&self, u: V2<R>) {
         if let Some((a, b)) = self.searched_polygon_cores() {
-            crate::polytope::ask_searches((a, d.map(|d| -d)), (b, d.map(|d| self.inverse_rotate(d))));
+            crate::polytope::ask_square_searches((a, -u), (b, self.inverse_rotate(u)));
         }
     }
 

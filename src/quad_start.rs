@@ -66,9 +66,9 @@ where
         Some(quad) => quad,
         None => {
             // One at a time, so that a pair apart asks for one support
-            // only; the lines of all four asked for first, which costs a
-            // pair apart no wait.
-            pair.ask_supports([u, u.perp(), -u, -u.perp()]);
+            // only; the lines of all four asked for first, which a pair
+            // apart pays in bandwidth, not in waits.
+            pair.ask_square_supports(u);
             let first = pair.support_shared(u);
             if parted(&first) {
                 return QuadStart::Apart;

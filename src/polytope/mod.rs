@@ -154,13 +154,14 @@ impl<R: Real> AngularSearch<R> {
     const SWEPT_LINES: usize = 16;
     const PER_LINE: usize = if 64 / core::mem::size_of::<V2<R>>() > 1 { 64 / core::mem::size_of::<V2<R>>() } else { 1 };
 
-    /// Asks for the coarse sample's lines.
+    /// A search along `d` that has asked for its sample's lines.
     #[inline(always)]
     fn begin(vertices: &[V2<R>], d: V2<R>) -> Self {
         Self::ask_sample(vertices);
         Self::along(vertices, d)
     }
 
+    /// Asks for the coarse sample's lines, which every direction reads.
     #[inline(always)]
     fn ask_sample(vertices: &[V2<R>]) {
         let n = vertices.len();
@@ -255,18 +256,20 @@ pub(crate) fn pair_support_near<R: Real>(
 }
 
 /// Asks for every line the searches of two searched polytopes' supports
-/// will read (A's along each of `da`, B's along each of `db`): the searches
-/// narrowed side by side, each wait for memory shared, and left unfinished.
-/// The supports looked up one after another then find their lines there or
-/// on their way, where each would wait for memory in turn.
+/// along `d`, its quarter turns counter-clockwise and its reverse will read
+/// (A's from `da`, B's from `db`): the eight searches narrowed side by
+/// side, each wait for memory shared, and left unfinished. The supports
+/// looked up one after another then find their lines there or on their
+/// way, where each would wait for memory in turn.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
-pub(crate) fn ask_searches<R: Real, const K: usize>((a, da): (&[V2<R>], [V2<R>; K]), (b, db): (&[V2<R>], [V2<R>; K])) {
+pub(crate) fn ask_square_searches<R: Real>((a, da): (&[V2<R>], V2<R>), (b, db): (&[V2<R>], V2<R>)) {
     AngularSearch::<R>::ask_sample(a);
     AngularSearch::<R>::ask_sample(b);
-    for k in 0..K {
-        AngularSearch::along(a, da[k]).narrow(a);
-        AngularSearch::along(b, db[k]).narrow(b);
+    let square = |d: V2<R>| [d, d.perp(), -d, -d.perp()];
+    for (da, db) in square(da).into_iter().zip(square(db)) {
+        AngularSearch::along(a, da).narrow(a);
+        AngularSearch::along(b, db).narrow(b);
     }
 }
 
