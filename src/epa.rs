@@ -7,12 +7,10 @@
 //! closest edge gives a *lower* bound of the depth; the support along that
 //! edge's normal an *upper* bound. EPA pushes the closest edge out until the
 //! bounds meet: exactly when a support vertex repeats or the closest edge
-//! is known to be a face (polytopes), or within `epsilon * size` (curved
-//! cores).
+//! is known to be a face or a stretch of faces read whole (polytopes), or
+//! within `epsilon * size` (curved cores).
 
 use crate::config::EpaConfig;
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-use crate::minkowski::WALKED_FACES_MAX;
 use crate::minkowski::{MinkowskiDifference, SupportPoint, NO_ID};
 use crate::polytope::cyclic;
 use crate::real::{Real, V2};
@@ -108,6 +106,11 @@ pub(crate) struct Corner<R> {
     /// square root and a division before every support).
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     normal: V2<R>,
+    /// Whether the edge to the next corner is settled: the boundary between
+    /// the two is known face by face, and its closest face is `normal` at
+    /// the edge's distance, an answer where it is the closest edge.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    settled: bool,
 }
 
 impl<R: Real> Corner<R> {
@@ -122,6 +125,8 @@ impl<R: Real> Corner<R> {
             id,
             #[cfg(not(any(target_os = "none", target_family = "wasm")))]
             normal: V2::new(R::ONE, R::ZERO),
+            #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+            settled: false,
         }
     }
     #[inline(always)]
@@ -137,6 +142,18 @@ impl<R: Real> Corner<R> {
         // `d` comes from `edge`, which never gives -0.0 (`max` with +0.0
         // returns +0.0): a -0.0 here would flip the flag.
         self.signed_distance = if curved && self.on_curve() { -d } else { d };
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        {
+            self.settled = false;
+        }
+    }
+    /// Settles the edge to the next corner at its closest face's distance
+    /// and normal ([`Corner::settled`]).
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn settle(&mut self, (d, normal): (R, V2<R>), curved: bool) {
+        self.set_edge((d, normal), curved);
+        self.settled = true;
     }
     /// Sets the edge to the next corner from [`edge`]'s distance and normal.
     #[inline(always)]
@@ -175,11 +192,6 @@ pub(crate) trait Storage<R> {
     fn clear_all(&mut self);
     /// How many corners fit in all.
     fn capacity(&self) -> usize;
-    /// How many more corners fit.
-    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    fn room(&self) -> usize {
-        self.capacity().saturating_sub(self.items().len())
-    }
 }
 
 impl<R: Copy, const N: usize> Storage<R> for heapless::Vec<Corner<R>, N> {
@@ -263,17 +275,15 @@ fn edge<R: Real>(p: V2<R>, q: V2<R>) -> (R, V2<R>) {
     }
 }
 
-/// [`edge`]'s distance and normal for a face from `p` whose outward unit
-/// normal the difference gave.
-#[cfg(not(any(target_os = "none", target_family = "wasm")))]
-#[inline(always)]
-fn face<R: Real>(p: V2<R>, normal: V2<R>) -> (R, V2<R>) {
-    (p.dot(normal).max(R::ZERO), normal)
-}
-
 fn corner<R: Real>(s: &SupportPoint<R>, curved: bool) -> Corner<R> {
     Corner::new(V2::from_glam(s.point), s.id, curved)
 }
+
+/// The most faces a stretch of boundary between two corners may have to be
+/// read whole ([`MinkowskiDifference::closest_face_between`]) rather than
+/// split by another support.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+const SETTLED_FACES_MAX: usize = 9;
 
 pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
     polytope: &mut S,
@@ -353,10 +363,11 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         let j = if i + 1 >= n { 0 } else { i + 1 };
         let (p, q) = (items.get(i).copied().unwrap_or_default(), items.get(j).copied().unwrap_or_default());
         let normal = p.normal_to(&q);
-        // The closest edge on the boundary: its distance is reached, so the
-        // bounds meet without the support that would repeat an end.
+        // The closest edge on the boundary, or settled: its distance is
+        // reached, so the bounds meet without the support that would repeat
+        // an end.
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        if difference.is_face(p.id, q.id) {
+        if p.settled || difference.is_face(p.id, q.id) {
             if lower <= upper {
                 (upper, best) = (lower, normal);
             }
@@ -365,39 +376,16 @@ pub(crate) fn expand<R: Real, S: Storage<R>, M: MinkowskiDifference<R>>(
         if iterations >= config.max_iterations() {
             break (i, lower, Status::IterationLimit);
         }
-        // A short stretch of boundary between the edge's ends: taken whole,
-        // every edge of it a face, where a support at a time would split
-        // the edge again and again.
+        // A stretch of boundary between the edge's ends short enough to
+        // read whole: settled at its closest face, where a support at a
+        // time would split the edge again and again.
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-        {
-            let unset = (SupportPoint { point: V2::<R>::zero().to_glam(), id: NO_ID }, V2::<R>::zero().to_glam());
-            let mut faces = [unset; WALKED_FACES_MAX];
-            let room = polytope.room().saturating_add(1).min(WALKED_FACES_MAX);
-            if let Some(count) = difference.faces_between(p.id, q.id, faces.get_mut(..room).unwrap_or_default()) {
-                iterations += 1;
-                // The edge is one face already (parallel edges of both, which
-                // `is_face` does not know): measured along its own normal, it
-                // is the answer where it is still the closest.
-                if let [(_, normal)] = faces.get(..count).unwrap_or_default() {
-                    let (depth, normal) = face(p.w, V2::from_glam(*normal));
-                    if depth <= lower {
-                        if depth <= upper {
-                            (upper, best) = (depth, normal);
-                        }
-                        break (i, depth, Status::Converged);
-                    }
-                }
-                for (k, (s, _)) in faces.iter().take(count.saturating_sub(1)).enumerate() {
-                    polytope.insert_at(i + 1 + k, corner(s, curved));
-                }
-                let items = polytope.items_mut();
-                for (k, (_, normal)) in faces.iter().take(count).enumerate() {
-                    if let Some(c) = items.get_mut(i + k) {
-                        c.set_edge(face(c.w, V2::from_glam(*normal)), curved);
-                    }
-                }
-                continue;
+        if let Some((depth, normal)) = difference.closest_face_between(p.id, q.id, SETTLED_FACES_MAX) {
+            iterations += 1;
+            if let Some(c) = polytope.items_mut().get_mut(i) {
+                c.settle((depth, V2::from_glam(normal)), curved);
             }
+            continue;
         }
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         let w = corner(&difference.support_between(normal.to_glam(), p.id, q.id), curved);

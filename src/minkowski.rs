@@ -75,6 +75,18 @@ pub trait MinkowskiDifference<R: Real> {
         let _ = (from, to, faces);
         None
     }
+    /// The closest to the origin of the faces of the difference's boundary
+    /// from the point of id `from` to the point of id `to`, in that order
+    /// counter-clockwise, where at most `max_faces` lie between: its
+    /// distance from the origin (never negative) and its outward unit
+    /// normal. No part of the boundary between is closer, so a solver can
+    /// settle that whole stretch at once. The normal comes from the shapes'
+    /// own edges, as in [`faces_between`](Self::faces_between). `None`, the
+    /// default, is always safe.
+    fn closest_face_between(&self, from: u32, to: u32, max_faces: usize) -> Option<(R, R::Vector)> {
+        let _ = (from, to, max_faces);
+        None
+    }
     /// The pair's size: the larger bounding radius. Relative tolerances are
     /// multiplied by it.
     fn scale(&self) -> R;
@@ -317,13 +329,61 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
 
     /// [`MinkowskiDifference::faces_between`] for two polygons whose types
     /// are known when the program is compiled, where at most `out.len()`
-    /// (and [`WALKED_FACES_MAX`]) faces lie between: the merge of their
-    /// edges, walked from `from` as [`neighbours`](Self::neighbours) steps,
-    /// each polygon's index going forwards as far as the ids say. Each
-    /// face's normal is its edge's, turned in the polygon's own frame.
+    /// (and [`WALKED_FACES_MAX`]) faces lie between.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn faces_between(&self, from: u32, to: u32, out: &mut [(SupportPoint<R>, R::Vector)]) -> Option<usize> {
+        let mut slots = out.iter_mut();
+        self.walk_faces(from, to, slots.len().min(WALKED_FACES_MAX), |_, end, edge| {
+            let normal = edge.perp_cw().try_normalize()?;
+            if let Some(slot) = slots.next() {
+                *slot = (SupportPoint { point: end.w.to_glam(), id: end.id }, normal.to_glam());
+            }
+            Some(())
+        })
+    }
+
+    /// [`MinkowskiDifference::closest_face_between`] for two polygons whose
+    /// types are known when the program is compiled.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    pub fn closest_face_between(&self, from: u32, to: u32, max_faces: usize) -> Option<(R, V2<R>)> {
+        // Faces compared by their distances divided by their edges' lengths:
+        // a root and a division each, where the unit normal takes a root and
+        // two; the closest's normal is then taken with the usual care.
+        let mut closest = (R::INFINITY, V2::zero(), V2::zero());
+        self.walk_faces(from, to, max_faces, |start, _, edge| {
+            let outward = edge.perp_cw();
+            let length = outward.length();
+            // Too short to divide by safely: the careful unit normal.
+            let distance =
+                if length > R::EPSILON { start.dot(outward) / length } else { start.dot(outward.try_normalize()?) };
+            let closer = distance < closest.0;
+            closest = core::hint::select_unpredictable(closer, (distance, outward, start), closest);
+            Some(())
+        })?;
+        let (_, outward, start) = closest;
+        let normal = outward.try_normalize()?;
+        // Measured from the face's start, as a solver measures its edges.
+        Some((start.dot(normal).max(R::ZERO), normal))
+    }
+
+    /// The faces of the boundary from the point of id `from` to that of id
+    /// `to`, counter-clockwise, where at most `max_faces` lie between: the
+    /// merge of the polygons' edges, walked from `from` as
+    /// [`neighbours`](Self::neighbours) steps, each polygon's index going
+    /// forwards as far as the ids say. Each face goes to `each` as its start,
+    /// its end and its edge (turned in the polygon's own frame); the count,
+    /// once the walk arrives at `to`.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn walk_faces(
+        &self,
+        from: u32,
+        to: u32,
+        max_faces: usize,
+        mut each: impl FnMut(V2<R>, MinkowskiVertex<R>, V2<R>) -> Option<()>,
+    ) -> Option<usize> {
         let (a, b) = self.polygon_cores()?;
         let (n, m) = (a.len(), b.len());
         let ((mut ia, mut ib), (ja, jb)) = (vertex_indices(from, n, m)?, vertex_indices(to, n, m)?);
@@ -331,11 +391,12 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
         let (mut left_a, mut left_b) = (steps(ia, ja, n), steps(ib, jb, m));
         // Room for as many faces as the steps (parallel edges, taken
         // together, make fewer).
-        if !(1..=out.len().min(WALKED_FACES_MAX)).contains(&(left_a + left_b)) {
+        if !(1..=max_faces).contains(&(left_a + left_b)) {
             return None;
         }
         let next = |k: usize, len: usize| if k + 1 >= len { 0 } else { k + 1 };
-        for (count, slot) in out.iter_mut().enumerate() {
+        let mut start = self.rotate(at(b, ib)) + self.offset - at(a, ia);
+        for count in 0..max_faces {
             // B's edge first where A's (reversed) turns further; parallel
             // edges together. A polygon with no steps left stays.
             let (edge_a, edge_b) = (at(a, ia) - at(a, next(ia, n)), self.rotate(at(b, next(ib, m)) - at(b, ib)));
@@ -359,8 +420,8 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
             let edge =
                 core::hint::select_unpredictable(step_b && (!step_a || edge_b.l1() >= edge_a.l1()), edge_b, edge_a);
             let end = self.vertex_of((ia, at(a, ia)), (ib, at(b, ib)));
-            let normal = edge.perp_cw().try_normalize()?;
-            *slot = (SupportPoint { point: end.w.to_glam(), id: end.id }, normal.to_glam());
+            each(start, end, edge)?;
+            start = end.w;
             if left_a + left_b == 0 {
                 return Some(count + 1);
             }
@@ -793,6 +854,11 @@ impl<R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> MinkowskiDif
     fn faces_between(&self, from: u32, to: u32, faces: &mut [(SupportPoint<R>, R::Vector)]) -> Option<usize> {
         Pair::faces_between(self, from, to, faces)
     }
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn closest_face_between(&self, from: u32, to: u32, max_faces: usize) -> Option<(R, R::Vector)> {
+        Pair::closest_face_between(self, from, to, max_faces).map(|(d, normal)| (d, normal.to_glam()))
+    }
     fn scale(&self) -> R {
         Pair::scale(self)
     }
@@ -857,6 +923,8 @@ impl<'s, R: Real> Corners<'s, R> {
 
 #[cfg(all(test, not(any(target_os = "none", target_family = "wasm"))))]
 mod tests {
+    extern crate std;
+
     use super::{Pair, NO_ID};
     use crate::real::V2;
     use crate::shape::Polygon;
@@ -916,5 +984,60 @@ mod tests {
         assert_eq!(faces, n + m);
         assert!(!pair.is_face(NO_ID, 1) && !pair.is_face(1, NO_ID));
         assert!(!pair.is_face(((n as u32) << 16) | 1, 1 << 16));
+
+        // The closest face of every stretch of the boundary, against exact
+        // distances: the faces are the pairs `is_face` names, their ends
+        // integers, and squared distances compare exactly as fractions.
+        let id = |(ia, ib): (usize, usize)| ((ia << 16) | ib) as u32;
+        let point = |(ia, ib): (usize, usize)| placed[ib] - va[ia];
+        let vertices: std::vec::Vec<(usize, usize)> = (0..n).flat_map(|ia| (0..m).map(move |ib| (ia, ib))).collect();
+        let after = |v: (usize, usize)| vertices.iter().copied().find(|&w| pair.is_face(id(v), id(w)));
+        let mut cycle =
+            std::vec![(0..n).flat_map(|ia| (0..m).map(move |ib| (ia, ib))).find(|&v| after(v).is_some()).unwrap()];
+        while let Some(next) = after(*cycle.last().unwrap()).filter(|w| *w != cycle[0]) {
+            cycle.push(next);
+        }
+        assert_eq!(cycle.len(), n + m);
+        // Twice the area's cross product and the squared length, exact in i128.
+        let exact = |k: usize| {
+            let (p, q) = (point(cycle[k % cycle.len()]), point(cycle[(k + 1) % cycle.len()]));
+            let e = q - p;
+            let cross = (e.x as i128) * (-p.y as i128) - (e.y as i128) * (-p.x as i128);
+            assert!(cross > 0, "the origin is inside B - A");
+            (cross * cross, (e.x as i128).pow(2) + (e.y as i128).pow(2), k)
+        };
+        let mut settled = 0;
+        for start in 0..cycle.len() {
+            for count in 1..cycle.len() {
+                let (from, to) = (id(cycle[start]), id(cycle[(start + count) % cycle.len()]));
+                // A stretch round a whole polygon has ids that cannot say so.
+                let steps_a = (start..start + count)
+                    .filter(|&k| cycle[k % cycle.len()].0 != cycle[(k + 1) % cycle.len()].0)
+                    .count();
+                if steps_a >= n || count - steps_a >= m {
+                    assert_eq!(pair.closest_face_between(from, to, count), None, "from {start} over {count}");
+                    continue;
+                }
+                let Some((distance, normal)) = pair.closest_face_between(from, to, count) else {
+                    panic!("no closest face from {start} over {count}");
+                };
+                assert_eq!(pair.closest_face_between(from, to, count - 1), None, "too many faces");
+                // The least c^2 / l^2, by cross-multiplying.
+                let (c2, l2, k) = (start..start + count)
+                    .map(exact)
+                    .reduce(|best, f| if f.0 * best.1 < best.0 * f.1 { f } else { best })
+                    .unwrap();
+                let expected = ((c2 as f64) / (l2 as f64)).sqrt();
+                assert!(
+                    (distance - expected).abs() <= 1e-12,
+                    "from {start} over {count}: {distance} against {expected}"
+                );
+                let e = point(cycle[(k + 1) % cycle.len()]) - point(cycle[k % cycle.len()]);
+                let outward = e.perp_cw() * (1.0 / e.length());
+                assert!((normal - outward).length() <= 1e-12, "from {start} over {count}: normal of face {k}");
+                settled += 1;
+            }
+        }
+        assert!(settled >= 4 * cycle.len(), "{settled} stretches settled");
     }
 }
