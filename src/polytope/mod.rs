@@ -573,18 +573,41 @@ mod tests {
     use crate::real::Real;
     use std::vec::Vec;
 
-    /// A counter-clockwise polygon of `n` vertices near an ellipse, from a
-    /// seeded generator: unevenly spaced, so its edges turn by uneven steps.
+    /// A counter-clockwise polygon of at most `n` vertices near an ellipse,
+    /// from a seeded generator: unevenly spaced, so its edges turn by uneven
+    /// steps. Its vertices lie on a grid that both precisions hold exactly,
+    /// and those that do not turn strictly left (by exact integer cross
+    /// products) are dropped: a support is one vertex only on a polygon
+    /// that is convex as stored, not merely as drawn.
     fn polygon<R: Real>(seed: &mut u64, n: usize) -> Vec<V2<R>> {
+        const GRID: f64 = (1u64 << 20) as f64;
         let mut next = || {
             *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             (*seed >> 11) as f64 / (1u64 << 53) as f64
         };
         let (a, b) = (0.3 + next(), 0.3 + next());
-        let mut angles: Vec<f64> = (0..n).map(|_| next() * core::f64::consts::TAU).collect();
-        angles.sort_by(f64::total_cmp);
-        angles.dedup();
-        angles.into_iter().map(|t| V2::new(R::from_f64(a * t.cos()), R::from_f64(b * t.sin()))).collect()
+        let mut points: Vec<(i64, i64)> = (0..n)
+            .map(|_| next() * core::f64::consts::TAU)
+            .map(|t| ((a * t.cos() * GRID).round() as i64, (b * t.sin() * GRID).round() as i64))
+            .collect();
+        points.sort_unstable();
+        points.dedup();
+        // Andrew's monotone chain: the lower hull left to right, then the upper back.
+        let turns_left = |o: (i64, i64), p: (i64, i64), q: (i64, i64)| {
+            i128::from(p.0 - o.0) * i128::from(q.1 - o.1) - i128::from(p.1 - o.1) * i128::from(q.0 - o.0) > 0
+        };
+        let mut hull: Vec<(i64, i64)> = Vec::new();
+        for pass in [points.clone(), points.into_iter().rev().collect()] {
+            let floor = hull.len();
+            for p in pass {
+                while hull.len() >= floor + 2 && !turns_left(hull[hull.len() - 2], hull[hull.len() - 1], p) {
+                    hull.pop();
+                }
+                hull.push(p);
+            }
+            hull.pop();
+        }
+        hull.into_iter().map(|(x, y)| V2::new(R::from_f64(x as f64 / GRID), R::from_f64(y as f64 / GRID))).collect()
     }
 
     /// Both searched side by side, A's and B's vertices are those each one's
@@ -631,7 +654,7 @@ mod tests {
         let (mut alone, mut whole_searched) = (0, 0);
         let turn = |t: f64| V2::new(R::from_f64(t.cos()), R::from_f64(t.sin()));
         for round in 0..3000 {
-            let v = polygon::<R>(&mut seed, 17 + round % 300);
+            let v = polygon::<R>(&mut seed, 17 + (round * 7) % 1100);
             let start = round as f64 * 0.37;
             let spread = [0.05, 0.3, 1.5, 3.0][round % 4];
             let (from, to) = (
