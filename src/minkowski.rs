@@ -10,6 +10,8 @@ use crate::polytope::{
     at, pair_support_near, polytope_support_between, squares_in_one_pass, ARC_SEARCH_MIN, SMALL_POLYGON_MAX,
 };
 use crate::real::{Real, V2};
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::shape::SmallPolygon;
 use crate::shape::SupportMap;
 use crate::transform::Transform;
 
@@ -282,16 +284,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn support_between(&self, d: V2<R>, from: u32, to: u32) -> MinkowskiVertex<R> {
-        let Some((a, b)) =
-            self.polygon_cores().filter(|(a, b)| (ARC_SEARCH_MIN + 1..0xFFFF).contains(&a.len().max(b.len())))
+        let Some((a, b)) = self
+            .polygons()
+            .filter(|(a, b)| (ARC_SEARCH_MIN + 1..0xFFFF).contains(&a.vertices.len().max(b.vertices.len())))
         else {
             return self.support_shared(d);
         };
         if from == NO_ID || to == NO_ID {
             return self.support_shared(d);
         }
-        let (ia, a) = polytope_support_between(a, -d, from >> 16, to >> 16);
-        let (ib, b) = polytope_support_between(b, self.inverse_rotate(d), from & 0xFFFF, to & 0xFFFF);
+        let (ia, a) = polytope_support_between(a.vertices, a.compass, -d, from >> 16, to >> 16);
+        let (ib, b) =
+            polytope_support_between(b.vertices, b.compass, self.inverse_rotate(d), from & 0xFFFF, to & 0xFFFF);
         self.vertex_of((ia, a), (ib, b))
     }
 
@@ -447,9 +451,11 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     pub fn support(&self, d: V2<R>) -> MinkowskiVertex<R> {
         #[cfg(not(any(target_os = "none", target_family = "wasm")))]
         if let Some((a, b)) = self.searched_polygon_cores() {
-            let (ia, ib) =
-                pair_support_near((a, -d, self.hint_a.get()), (b, self.inverse_rotate(d), self.hint_b.get()));
-            return self.vertex_of((ia, at(a, ia)), (ib, at(b, ib)));
+            let (ia, ib) = pair_support_near(
+                (a.vertices, a.compass, -d, self.hint_a.get()),
+                (b.vertices, b.compass, self.inverse_rotate(d), self.hint_b.get()),
+            );
+            return self.vertex_of((ia, at(a.vertices, ia)), (ib, at(b.vertices, ib)));
         }
         let (a, ia) = self.a.support_feature((-d).to_glam(), self.hint_a.get());
         let (b, ib) = self.b.support_feature(self.inverse_rotate(d).to_glam(), self.hint_b.get());
@@ -484,7 +490,10 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[inline(always)]
     pub fn ask_square_supports(&self, u: V2<R>) {
         if let Some((a, b)) = self.searched_polygon_cores() {
-            crate::polytope::ask_square_searches((a, -u), (b, self.inverse_rotate(u)));
+            crate::polytope::ask_square_searches(
+                (a.vertices, a.compass, -u),
+                (b.vertices, b.compass, self.inverse_rotate(u)),
+            );
         }
     }
 
@@ -558,12 +567,12 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     /// are known when the program is compiled.
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
-    fn searched_polygon_cores(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
+    fn searched_polygon_cores(&self) -> Option<(SmallPolygon<'s, R>, SmallPolygon<'s, R>)> {
         if !Self::shapes_known() {
             return None;
         }
         let (a, b): (&'s A, &'s B) = (self.a, self.b);
-        Some((a.searched_polygon_core()?.vertices, b.searched_polygon_core()?.vertices))
+        Some((a.searched_polygon_core()?, b.searched_polygon_core()?))
     }
 
     /// The two cores as polygons of any size ([`SupportMap::polygon_core`]),
@@ -571,11 +580,18 @@ impl<'s, R: Real, A: SupportMap<R> + ?Sized, B: SupportMap<R> + ?Sized> Pair<'s,
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     #[inline(always)]
     pub fn polygon_cores(&self) -> Option<(Vertices<'s, R>, Vertices<'s, R>)> {
+        self.polygons().map(|(a, b)| (a.vertices, b.vertices))
+    }
+
+    /// [`polygon_cores`](Self::polygon_cores) with their compasses.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn polygons(&self) -> Option<(SmallPolygon<'s, R>, SmallPolygon<'s, R>)> {
         if !Self::shapes_known() {
             return None;
         }
         let (a, b): (&'s A, &'s B) = (self.a, self.b);
-        Some((a.polygon_core()?.vertices, b.polygon_core()?.vertices))
+        Some((a.polygon_core()?, b.polygon_core()?))
     }
 
     /// A segment core (a capsule's, a segment's) and a small polygon, where

@@ -6,12 +6,16 @@
 //! the separating-axis test and the ray query's path for small polygons.
 
 mod clip;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+mod compass;
 
 pub(crate) use clip::{cast_ray_many_sided, cast_ray_polygon, face_cast_to_local, FaceRounding};
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 pub(crate) use clip::{cast_ray_small_polygon, FaceVerdict};
 
 use crate::real::{Real, V2};
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+pub(crate) use compass::{write as write_compass, Compass, SLOTS as COMPASS_SLOTS};
 
 /// The most vertices a polygon may have for the separating-axis test.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
@@ -231,42 +235,90 @@ impl<R: Real> AngularSearch<R> {
 /// The supports of two polytopes that both are searched here
 /// ([`searched_here`]), A's along `da` and B's along `db`: the vertices
 /// [`polytope_support_near`] gives each, from each one's hint. Where both
-/// are searched, the two searches go step by step side by side, so each
-/// wait for memory serves both: large polygons in a scene are read from
-/// memory, not cache, and their searches wait on little else.
+/// are searched, the two searches go step by step side by side (on their
+/// compasses' arcs where both have one), so each wait for memory serves
+/// both: large polygons in a scene are read from memory, not cache, and
+/// their searches wait on little else.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
 pub(crate) fn pair_support_near<R: Real>(
-    (a, da, hint_a): (&[V2<R>], V2<R>, u32),
-    (b, db, hint_b): (&[V2<R>], V2<R>, u32),
+    (a, compass_a, da, hint_a): (&[V2<R>], Compass<'_, R>, V2<R>, u32),
+    (b, compass_b, db, hint_b): (&[V2<R>], Compass<'_, R>, V2<R>, u32),
 ) -> (usize, usize) {
     let climbed = |v: &[V2<R>], d: V2<R>, start: usize| hill_climb(v, d, start, v.len()).0;
     match (walked(a, da, hint_a), walked(b, db, hint_b)) {
         (Some(i), Some(j)) => (i, j),
-        (Some(i), None) => (i, climbed(b, db, angular_search(b, db))),
-        (None, Some(j)) => (climbed(a, da, angular_search(a, da)), j),
-        (None, None) => {
-            let (mut search_a, mut search_b) = (AngularSearch::begin(a, da), AngularSearch::begin(b, db));
-            search_a.narrow(a);
-            search_b.narrow(b);
-            let (i, j) = (search_a.finish(a), search_b.finish(b));
-            (climbed(a, da, i), climbed(b, db, j))
-        }
+        (Some(i), None) => (i, searched_support(b, compass_b, db)),
+        (None, Some(j)) => (searched_support(a, compass_a, da), j),
+        (None, None) => match (compass_a.arc(a.len(), da), compass_b.arc(b.len(), db)) {
+            (Some(arc_a), Some(arc_b)) => {
+                arc_a.ask(a);
+                arc_b.ask(b);
+                (climbed(a, da, arc_a.top(a, da)), climbed(b, db, arc_b.top(b, db)))
+            }
+            _ => {
+                let (mut search_a, mut search_b) = (AngularSearch::begin(a, da), AngularSearch::begin(b, db));
+                search_a.narrow(a);
+                search_b.narrow(b);
+                let (i, j) = (search_a.finish(a), search_b.finish(b));
+                (climbed(a, da, i), climbed(b, db, j))
+            }
+        },
     }
+}
+
+/// The support of a searched polytope along `d`, from the vertex `hint`
+/// where it is a few steps away, else as [`searched_support`] finds it.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline]
+pub(crate) fn searched_support_near<R: Real>(
+    vertices: &[V2<R>],
+    compass: Compass<'_, R>,
+    d: V2<R>,
+    hint: u32,
+) -> usize {
+    walked(vertices, d, hint).unwrap_or_else(|| searched_support(vertices, compass, d))
+}
+
+/// The support of a searched polytope along `d`: on its compass's arc
+/// where it has one short enough, else by a search of the whole; then
+/// checked by a climb.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+pub(crate) fn searched_support<R: Real>(vertices: &[V2<R>], compass: Compass<'_, R>, d: V2<R>) -> usize {
+    let start = match compass.arc(vertices.len(), d) {
+        Some(arc) => {
+            arc.ask(vertices);
+            arc.top(vertices, d)
+        }
+        None => angular_search(vertices, d),
+    };
+    hill_climb(vertices, d, start, vertices.len()).0
 }
 
 /// Asks for every line the searches of two searched polytopes' supports
 /// along `d`, its quarter turns counter-clockwise and its reverse will read
-/// (A's from `da`, B's from `db`): the eight searches narrowed side by
-/// side, each wait for memory shared, and left unfinished. The supports
-/// looked up one after another then find their lines there or on their
-/// way, where each would wait for memory in turn.
+/// (A's from `da`, B's from `db`): the eight compass arcs, or, for a
+/// polytope without a compass, the eight searches narrowed side by side,
+/// each wait for memory shared, and left unfinished. The supports looked
+/// up one after another then find their lines there or on their way,
+/// where each would wait for memory in turn.
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
 #[inline(always)]
-pub(crate) fn ask_square_searches<R: Real>((a, da): (&[V2<R>], V2<R>), (b, db): (&[V2<R>], V2<R>)) {
+pub(crate) fn ask_square_searches<R: Real>(
+    (a, compass_a, da): (&[V2<R>], Compass<'_, R>, V2<R>),
+    (b, compass_b, db): (&[V2<R>], Compass<'_, R>, V2<R>),
+) {
+    let square = |d: V2<R>| [d, d.perp(), -d, -d.perp()];
+    let arcs = |v: &[V2<R>], compass: Compass<'_, R>, d: V2<R>| square(d).map(|d| compass.arc(v.len(), d));
+    let (arcs_a, arcs_b) = (arcs(a, compass_a, da), arcs(b, compass_b, db));
+    if arcs_a.iter().chain(&arcs_b).all(Option::is_some) {
+        arcs_a.iter().flatten().for_each(|arc| arc.ask(a));
+        arcs_b.iter().flatten().for_each(|arc| arc.ask(b));
+        return;
+    }
     AngularSearch::<R>::ask_sample(a);
     AngularSearch::<R>::ask_sample(b);
-    let square = |d: V2<R>| [d, d.perp(), -d, -d.perp()];
     for (da, db) in square(da).into_iter().zip(square(db)) {
         AngularSearch::along(a, da).narrow(a);
         AngularSearch::along(b, db).narrow(b);
@@ -344,9 +396,16 @@ const ARC_SEARCH_MAX: usize = 128;
 /// half turn), so the first that does not rise is halved for, its own
 /// edge and the one before measured as a climb would measure them. At
 /// the arc's ends, or with hints that are not such a pair, a short climb
-/// checks the vertex, and the whole polygon is searched where it fails.
+/// checks the vertex, and where it fails, or the arc is long, the support
+/// is searched for on the compass's arc (or the whole polygon's).
 #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, from: u32, to: u32) -> (usize, V2<R>) {
+pub(crate) fn polytope_support_between<R: Real>(
+    vertices: &[V2<R>],
+    compass: Compass<'_, R>,
+    d: V2<R>,
+    from: u32,
+    to: u32,
+) -> (usize, V2<R>) {
     let n = vertices.len();
     let (from, to) = (from as usize, to as usize);
     let wrap = |i: usize| if i >= n { i - n } else { i };
@@ -364,6 +423,11 @@ pub(crate) fn polytope_support_between<R: Real>(vertices: &[V2<R>], d: V2<R>, fr
         if let (top, true) = hill_climb(vertices, d, wrap(from + k), 2) {
             return (top, at(vertices, top));
         }
+    }
+    if let Some(arc) = compass.arc(n, d) {
+        arc.ask(vertices);
+        let (top, _) = hill_climb(vertices, d, arc.top(vertices, d), n);
+        return (top, at(vertices, top));
     }
     // The capacity is not known here: any, so the length alone decides.
     polytope_support::<R, { usize::MAX }>(vertices, d)
@@ -569,7 +633,7 @@ fn hill_climb<R: Real>(vertices: &[V2<R>], d: V2<R>, start: usize, max_steps: us
 mod tests {
     extern crate std;
 
-    use super::{pair_support_near, polytope_support, polytope_support_between, polytope_support_near, V2};
+    use super::{pair_support_near, polytope_support, polytope_support_between, polytope_support_near, Compass, V2};
     use crate::real::Real;
     use std::vec::Vec;
 
@@ -610,12 +674,22 @@ mod tests {
         hull.into_iter().map(|(x, y)| V2::new(R::from_f64(x as f64 / GRID), R::from_f64(y as f64 / GRID))).collect()
     }
 
+    /// The compass of `v`, in slots of its own.
+    fn compass_of<R: Real>(v: &[V2<R>]) -> [V2<R>; super::COMPASS_SLOTS] {
+        let mut slots = [V2::zero(); super::COMPASS_SLOTS];
+        super::write_compass(v, &mut slots);
+        slots
+    }
+
     /// Both searched side by side, A's and B's vertices are those each one's
     /// own search finds, from every kind of hint: none, far off, near.
     fn pairs_search_as_each_alone<R: Real>() {
         let mut seed = 11;
         for round in 0..400 {
             let (a, b) = (polygon::<R>(&mut seed, 65 + round % 700), polygon::<R>(&mut seed, 65 + (round * 7) % 300));
+            let (slots_a, slots_b) = (compass_of(&a), compass_of(&b));
+            let (compass_a, compass_b, none) =
+                (Compass::in_slots(&slots_a), Compass::in_slots(&slots_b), Compass::ABSENT);
             for k in 0..16u32 {
                 let angle = f64::from(k) * 0.41 + round as f64;
                 let d = V2::new(R::from_f64(angle.cos()), R::from_f64(angle.sin()));
@@ -629,7 +703,11 @@ mod tests {
                         polytope_support_near::<R, 1024>(&a, d, hint_a).0,
                         polytope_support_near::<R, 1024>(&b, e, hint_b).0,
                     );
-                    assert_eq!(pair_support_near((&a, d, hint_a), (&b, e, hint_b)), alone, "round {round}, k {k}");
+                    // With compasses, with none, and with one of the two.
+                    for (ca, cb) in [(compass_a, compass_b), (none, none), (compass_a, none)] {
+                        let pair = pair_support_near((&a, ca, d, hint_a), (&b, cb, e, hint_b));
+                        assert_eq!(pair, alone, "round {round}, k {k}");
+                    }
                 }
             }
         }
@@ -670,11 +748,14 @@ mod tests {
             for k in 1..8 {
                 let d = turn(start + spread * f64::from(k) / 8.0);
                 let whole = polytope_support::<R, 1024>(&v, d).0;
-                let arc = polytope_support_between(&v, d, from as u32, to as u32).0;
-                assert_eq!(arc, whole, "round {round}, k {k}, arc {from} to {to} of {}", v.len());
-                // Ends given the wrong way round: the climb catches it.
-                let other = polytope_support_between(&v, d, to as u32, from as u32).0;
-                assert_eq!(other, whole, "round {round}, k {k}, arc {to} to {from} of {}", v.len());
+                let slots = compass_of(&v);
+                for compass in [Compass::in_slots(&slots), Compass::ABSENT] {
+                    let arc = polytope_support_between(&v, compass, d, from as u32, to as u32).0;
+                    assert_eq!(arc, whole, "round {round}, k {k}, arc {from} to {to} of {}", v.len());
+                    // Ends given the wrong way round: the climb catches it.
+                    let other = polytope_support_between(&v, compass, d, to as u32, from as u32).0;
+                    assert_eq!(other, whole, "round {round}, k {k}, arc {to} to {from} of {}", v.len());
+                }
             }
         }
         assert!(alone > 1000 && whole_searched > 100, "{alone} arcs searched alone, {whole_searched} not");
@@ -684,5 +765,30 @@ mod tests {
     fn arcs_search_as_the_whole_in_both_precisions() {
         arcs_search_as_the_whole::<f32>();
         arcs_search_as_the_whole::<f64>();
+    }
+
+    /// A compass's arc holds the support along any direction: its top is
+    /// a vertex of greatest dot product, by exact arithmetic (vertices on
+    /// a 2^-20 grid, directions of small integers: every product and sum
+    /// is exact in f64), before any climb; and arcs are short.
+    #[test]
+    fn compass_arcs_hold_the_support() {
+        let mut seed = 3;
+        let (mut searched, mut longest) = (0, 0);
+        for round in 0..300 {
+            let v = polygon::<f64>(&mut seed, 65 + (round * 13) % 1100);
+            let slots = compass_of(&v);
+            let compass = Compass::in_slots(&slots);
+            for (i, j) in (-12..=12).flat_map(|i| (-12..=12).map(move |j| (i, j))).filter(|&d| d != (0, 0)) {
+                let d = V2::new(f64::from(i), f64::from(j));
+                let Some(arc) = compass.arc(v.len(), d) else { continue };
+                searched += 1;
+                longest = longest.max(arc.len());
+                let top = arc.top(&v, d);
+                let most = v.iter().map(|p| p.dot(d)).fold(f64::NEG_INFINITY, f64::max);
+                assert_eq!(v[top].dot(d), most, "round {round}, direction ({i}, {j}), {} vertices", v.len());
+            }
+        }
+        assert!(searched > 100_000 && longest > 16, "{searched} arcs searched, the longest {longest}");
     }
 }

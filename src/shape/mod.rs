@@ -294,6 +294,7 @@ pub(crate) fn squared_down<R: Real>(r: R) -> R {
 #[derive(Clone, Copy, Debug)]
 pub struct SmallPolygon<'s, R: Real> {
     pub(crate) vertices: &'s [V2<R>],
+    pub(crate) compass: crate::polytope::Compass<'s, R>,
 }
 
 impl<R: Real, S: SupportMap<R> + ?Sized> SupportMap<R> for &S {

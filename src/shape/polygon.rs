@@ -1,6 +1,10 @@
 use super::polygon_frame::{Frame, Framing};
 use super::SupportMap;
 use crate::error::Error;
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+use crate::polytope::{
+    at, searched_here, searched_support, searched_support_near, write_compass, Compass, COMPASS_SLOTS,
+};
 use crate::polytope::{
     cast_ray_many_sided, cast_ray_polygon, polytope_support, polytope_support_near, searched, FaceRounding,
     SCAN_ONLY_MAX,
@@ -15,8 +19,10 @@ use glam::{DVec2, Vec2};
 /// type without a destructor is what lets a `const` declare one
 /// ([`from_array`](Polygon::from_array)). Unused slots stay zero, or hold
 /// copies of the first vertex where a support scan reads them all (small
-/// polygons on hosts), so the derived
-/// comparison compares the polygons.
+/// polygons on hosts); on hosts, a large polygon with room for eight more
+/// vertices keeps its compass in the last eight (its supports along
+/// sixteen directions, which shorten every search for a support). So the
+/// derived comparison compares the polygons.
 ///
 /// Vertices are kept counter-clockwise and relative to the first one (the
 /// reference point), so a polygon given in world coordinates far from the
@@ -56,7 +62,37 @@ impl<R: Real, const N: usize> Polygon<R, N> {
                 *slot = first;
             }
         }
-        Ok(Self::framed(vertices, points.len(), frame))
+        #[allow(unused_mut)]
+        let mut polygon = Self::framed(vertices, points.len(), frame);
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if Self::has_compass(polygon.len) {
+            let (vertices, slots) = polygon.vertices.split_at_mut(N - COMPASS_SLOTS);
+            write_compass(vertices.get(..polygon.len).unwrap_or_default(), slots);
+        }
+        Ok(polygon)
+    }
+
+    /// Whether a polygon of `len` vertices keeps a compass in its last
+    /// slots: where its supports are searched, it has room for one, and
+    /// its indices fit the compass's 16 bits.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn has_compass(len: usize) -> bool {
+        searched_here::<R, N>(len) && len + COMPASS_SLOTS <= N && len < usize::from(u16::MAX)
+    }
+
+    /// The polygon's compass, or none.
+    #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+    #[inline(always)]
+    fn compass(&self) -> Compass<'_, R> {
+        // Slots at a fixed place, next to the fields a query reads first:
+        // their line is asked for with those, not after the length is known.
+        let slots = self.vertices.get(N.saturating_sub(COMPASS_SLOTS)..).unwrap_or_default();
+        if Self::has_compass(self.len) {
+            Compass::in_slots(slots)
+        } else {
+            Compass::ABSENT
+        }
     }
 
     #[inline(always)]
@@ -207,10 +243,20 @@ fn vertex_id<const N: usize>(i: usize) -> u32 {
 impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     #[inline]
     fn support(&self, direction: R::Vector) -> R::Vector {
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if searched_here::<R, N>(self.len) {
+            let i = searched_support(self.vertices(), self.compass(), V2::from_glam(direction));
+            return at(self.vertices(), i).to_glam();
+        }
         polytope_support::<R, N>(self.scanned(), V2::from_glam(direction)).1.to_glam()
     }
     #[inline]
     fn support_feature(&self, direction: R::Vector, near: u32) -> (R::Vector, u32) {
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if searched_here::<R, N>(self.len) {
+            let i = searched_support_near(self.vertices(), self.compass(), V2::from_glam(direction), near);
+            return (at(self.vertices(), i).to_glam(), vertex_id::<N>(i));
+        }
         let (i, v) = polytope_support_near::<R, N>(self.scanned(), V2::from_glam(direction), near);
         (v.to_glam(), vertex_id::<N>(i))
     }
@@ -237,11 +283,12 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn small_polygon(&self) -> Option<super::SmallPolygon<'_, R>> {
-        (self.len <= super::SMALL_POLYGON_MAX).then(|| super::SmallPolygon { vertices: self.vertices() })
+        (self.len <= super::SMALL_POLYGON_MAX)
+            .then(|| super::SmallPolygon { vertices: self.vertices(), compass: self.compass() })
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
-        Some(super::SmallPolygon { vertices: self.vertices() })
+        Some(super::SmallPolygon { vertices: self.vertices(), compass: self.compass() })
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn inner_radius_squared(&self) -> R {
@@ -249,7 +296,8 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
     }
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
     fn searched_polygon_core(&self) -> Option<super::SmallPolygon<'_, R>> {
-        crate::polytope::searched_here::<R, N>(self.len).then(|| super::SmallPolygon { vertices: self.vertices() })
+        searched_here::<R, N>(self.len)
+            .then(|| super::SmallPolygon { vertices: self.vertices(), compass: self.compass() })
     }
     fn cast_local_ray(&self, o: R::Vector, d: R::Vector, max: R) -> Option<LocalRayCast<R>> {
         crate::polytope::face_cast_to_local(self.cast_local_face_ray(o, d, max), d)
@@ -275,5 +323,40 @@ impl<R: Real, const N: usize> SupportMap<R> for Polygon<R, N> {
             }
         }
         Some(cast_ray_polygon(self.vertices(), o, d, max, rounding))
+    }
+}
+
+#[cfg(all(test, not(any(target_os = "none", target_family = "wasm"))))]
+mod tests {
+    extern crate std;
+
+    use super::Polygon;
+    use crate::shape::SupportMap;
+    use glam::DVec2;
+
+    /// A polygon with room for its compass finds every support where one
+    /// without room finds it, from no hint and from a far one; and keeps
+    /// its compass in its slots, not in its vertices.
+    #[test]
+    fn a_compass_finds_the_supports_a_search_finds() {
+        let points: std::vec::Vec<DVec2> = (0..1000)
+            .map(|i| {
+                let t = f64::from(i) / 1000.0 * core::f64::consts::TAU;
+                DVec2::new(2.0 * t.cos(), 0.7 * t.sin())
+            })
+            .collect();
+        let roomy = Polygon::<f64, 1024>::new(&points).unwrap();
+        let tight = Polygon::<f64, 1000>::new(&points).unwrap();
+        assert!(roomy.compass().arc(1000, crate::real::V2::new(1.0, 0.3)).is_some());
+        assert!(tight.compass().arc(1000, crate::real::V2::new(1.0, 0.3)).is_none());
+        assert_eq!(roomy.len(), 1000);
+        for k in 0..4000 {
+            let t = f64::from(k) * 0.001_573;
+            let d = DVec2::new(t.cos(), t.sin());
+            for hint in [u32::MAX, 500] {
+                assert_eq!(roomy.support_feature(d, hint), tight.support_feature(d, hint), "direction {k}");
+            }
+            assert_eq!(roomy.support(d), tight.support(d), "direction {k}");
+        }
     }
 }
