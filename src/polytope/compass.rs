@@ -5,8 +5,7 @@
 //! of the whole polygon first reads a sample of it and then halves by
 //! branches the predictor misses.
 //!
-//! Hosts only, as the other searches' aids: a firmware keeps its polygons
-//! as small as they were.
+//! Hosts only, as the other searches' aids: a firmware links none of it.
 
 use super::{at, edge_from, prefetch};
 use crate::real::{Real, V2};
@@ -48,7 +47,7 @@ impl<'s, R: Real> Compass<'s, R> {
     #[inline(always)]
     fn point(&self, k: usize) -> Option<usize> {
         let slot = self.0.get(k / 2)?;
-        // Saturating: a NaN reads as 0, out of the way of nothing.
+        // `write` stored an integer below 2^16 here, which converts exactly.
         Some((if k.is_multiple_of(2) { slot.x } else { slot.y }).to_f64() as usize)
     }
 
