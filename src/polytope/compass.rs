@@ -154,11 +154,12 @@ impl Arc {
 
 /// The first `k` in `0..len` whose edge `from + k` (cyclically) does not rise
 /// along `d`, `len` where all rise, given that the edges rise and then stop
-/// rising. Halved by selects: which way each halving goes is a coin toss
-/// the predictor would miss.
+/// rising. Halved by branches, not selects: where lines are still in
+/// flight, a branch lets the processor read ahead on its guess.
 #[inline(always)]
 pub(crate) fn first_not_rising<R: Real>(vertices: &[V2<R>], d: V2<R>, from: usize, len: usize) -> usize {
     let n = vertices.len();
+    // Not rising, NaN too, as the climb stops.
     super::first_reached(0, len, |k| {
         let i = from + k;
         let rises = edge_from(vertices, if i >= n { i - n } else { i }).dot(d) > R::ZERO;

@@ -411,11 +411,7 @@ pub(crate) fn polytope_support_between<R: Real>(
     let wrap = |i: usize| if i >= n { i - n } else { i };
     let length = (from < n && to < n).then(|| wrap(to + n - from));
     if let Some(length) = length.filter(|&length| n > ARC_SEARCH_MIN && length <= ARC_SEARCH_MAX) {
-        // Not rising, NaN too, as the climb stops.
-        let k = first_reached(0, length, |k| {
-            let rises = edge_from(vertices, wrap(from + k)).dot(d) > R::ZERO;
-            !rises
-        });
+        let k = compass::first_not_rising(vertices, d, from, length);
         if (1..length).contains(&k) {
             let top = wrap(from + k);
             return (top, at(vertices, top));
