@@ -161,6 +161,16 @@ where
             return CoreProximity::Overlapping { simplex, iterations };
         }
         previous = vv;
+        // A segment that is a face of the difference, the origin beyond it:
+        // its closest point is the answer, exactly, without the support
+        // that would only repeat an end.
+        #[cfg(not(any(target_os = "none", target_family = "wasm")))]
+        if let Some((from, to)) = arc_of(simplex, v) {
+            if pair.is_face(from, to) {
+                lower_bound = lower_bound.max(vv.sqrt());
+                break (v, Status::Converged);
+            }
+        }
         if iterations >= max_iterations {
             // With no plane separating the origin, the cores may overlap, by
             // at most the sum of their bounding radii: the bound then says
@@ -221,13 +231,21 @@ where
     B: SupportMap<R> + ?Sized,
 {
     #[cfg(not(any(target_os = "none", target_family = "wasm")))]
-    if let ([p, q, _], 2) = simplex.slots() {
-        // Counter-clockwise from p to q where `-v` is on the right of p to q.
-        let (from, to) = if (q.w - p.w).cross(v) > R::ZERO { (p.id, q.id) } else { (q.id, p.id) };
+    if let Some((from, to)) = arc_of(simplex, v) {
         return pair.support_between(-v, from, to);
     }
     let _ = simplex;
     pair.support_shared(-v)
+}
+
+/// The ids of a segment simplex's ends, counter-clockwise round the
+/// difference where `-v` (from its closest point `v` to the origin) is on
+/// the right of the first to the second, as a polytope's outward normal is.
+#[cfg(not(any(target_os = "none", target_family = "wasm")))]
+#[inline(always)]
+fn arc_of<R: Real, P: Payload<R>>(simplex: &Simplex<R, P>, v: V2<R>) -> Option<(u32, u32)> {
+    let ([p, q, _], 2) = simplex.slots() else { return None };
+    Some(if (q.w - p.w).cross(v) > R::ZERO { (p.id, q.id) } else { (q.id, p.id) })
 }
 
 /// The simplex of the first support point, for [`distance_loop_from`]. Inlined,
