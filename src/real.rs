@@ -515,6 +515,11 @@ mod sse2 {
 
     #[inline(always)]
     pub fn extreme_dots_f64(v: &[V2<f64>], u: V2<f64>, t: V2<f64>) -> [usize; 4] {
+        if wide_fits(v) {
+            // SAFETY: `wide_fits` found AVX2 on this processor, its wide
+            // registers saved by the operating system.
+            return unsafe { wide_extremes_f64(v, u, t) };
+        }
         // SAFETY: as above.
         unsafe { extremes_f64(v, u, t) }
     }
@@ -595,6 +600,49 @@ mod sse2 {
         first_at_extremes((v, 2 * whole), [u, t], lanes, |axis, extreme| {
             let equal = equal_f64(&kept[axis], whole, _mm_set1_pd(extreme));
             (equal != 0).then(|| equal.trailing_zeros() as usize)
+        })
+    }
+
+    /// [`extremes_f64`] in four lanes, as [`wide_max_f64`]: the dots of
+    /// vertices 0 to 3 come out of their shuffles as 0, 2, 1, 3 and are put
+    /// back in order before they are kept.
+    #[target_feature(enable = "avx,avx2")]
+    #[inline]
+    fn wide_extremes_f64(v: &[V2<f64>], u: V2<f64>, t: V2<f64>) -> [usize; 4] {
+        let (ux, uy, tx, ty) = (_mm256_set1_pd(u.x), _mm256_set1_pd(u.y), _mm256_set1_pd(t.x), _mm256_set1_pd(t.y));
+        let mut kept = [[_mm256_setzero_pd(); WIDE_SCAN_MAX / 4]; 2];
+        let mut top = [_mm256_set1_pd(f64::NEG_INFINITY); 2];
+        let mut bottom = [_mm256_set1_pd(f64::INFINITY); 2];
+        for (k, c) in v.chunks_exact(4).take(WIDE_SCAN_MAX / 4).enumerate() {
+            let a = _mm256_setr_pd(c[0].x, c[0].y, c[1].x, c[1].y);
+            let b = _mm256_setr_pd(c[2].x, c[2].y, c[3].x, c[3].y);
+            let (xs, ys) = (_mm256_unpacklo_pd(a, b), _mm256_unpackhi_pd(a, b));
+            let along = |dx: __m256d, dy: __m256d| {
+                let sums = _mm256_add_pd(_mm256_mul_pd(xs, dx), _mm256_mul_pd(ys, dy));
+                _mm256_permute4x64_pd::<0b11_01_10_00>(sums)
+            };
+            let (x, y) = (along(ux, uy), along(tx, ty));
+            kept[0][k] = x;
+            kept[1][k] = y;
+            top = [_mm256_max_pd(x, top[0]), _mm256_max_pd(y, top[1])];
+            bottom = [_mm256_min_pd(x, bottom[0]), _mm256_min_pd(y, bottom[1])];
+        }
+        let highest = |m: __m256d| {
+            let m = _mm_max_pd(_mm256_castpd256_pd128(m), _mm256_extractf128_pd::<1>(m));
+            _mm_cvtsd_f64(_mm_max_pd(m, _mm_shuffle_pd::<0b01>(m, m)))
+        };
+        let lowest = |m: __m256d| {
+            let m = _mm_min_pd(_mm256_castpd256_pd128(m), _mm256_extractf128_pd::<1>(m));
+            _mm_cvtsd_f64(_mm_min_pd(m, _mm_shuffle_pd::<0b01>(m, m)))
+        };
+        let whole = (v.len() / 4).min(WIDE_SCAN_MAX / 4);
+        let lanes = [top.map(highest), bottom.map(lowest)];
+        first_at_extremes((v, 4 * whole), [u, t], lanes, |axis, extreme| {
+            let wanted = _mm256_set1_pd(extreme);
+            let bits = kept[axis].iter().enumerate().fold(0u64, |bits, (k, &quad)| {
+                bits | u64::from(_mm256_movemask_pd(_mm256_cmp_pd::<_CMP_EQ_OQ>(quad, wanted)) as u32) << (4 * k)
+            }) & low_bits(4 * whole);
+            (bits != 0).then(|| bits.trailing_zeros() as usize)
         })
     }
 
